@@ -1,0 +1,5 @@
+// Umbrella header: the whole public API of genmod.
+#pragma once
+
+#include "genmod/kernel/kernel.hpp"
+#include "genmod/tessellate/tessellate.hpp"

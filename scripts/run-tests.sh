@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The whole test suite: installs the Debian packages, builds genmod (Release, with
+# -frounding-math), runs every test with ctest, then builds the kernel and its tests again
+# under AddressSanitizer + UndefinedBehaviorSanitizer and runs those.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+jobs="$(nproc)"
+"$root/scripts/install-deps.sh"
+
+"$root/scripts/build.sh" release
+ctest --test-dir "$root/build/release" -j "$jobs" --output-on-failure
+
+"$root/scripts/build.sh" sanitize -DGENMOD_KERNEL_ONLY=ON -DGENMOD_SANITIZE=address,undefined \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo
+ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --test-dir "$root/build/sanitize" -j "$jobs" --output-on-failure
