@@ -1,0 +1,112 @@
+// Fn: a cheap value handle to a function R^n -> R^m (GENMOD's MAN).
+//
+// An Fn holds the DAG ids of its m scalar components. Its inputs are the parametric
+// coordinates x(i) it actually depends on (GENMOD's input set): x(3) has one input, {3}.
+// Binary operators apply componentwise when both operands have the same dimension, and
+// broadcast a scalar operand over the other's components; any other combination throws
+// std::invalid_argument naming both dimensions.
+//
+//   Fn u = x(0), v = x(1);
+//   Fn sphere = cat({cos(u) * cos(v), sin(u) * cos(v), sin(v)});
+//   Fn inside = length(p) < 1.0;        // 0/1 valued
+#pragma once
+
+#include "genmod/kernel/dag.hpp"
+
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <vector>
+
+namespace genmod {
+
+class Fn {
+ public:
+  // The constant scalar 0.
+  Fn();
+  // A constant scalar.
+  Fn(double value);  // NOLINT(google-explicit-constructor): numbers convert, as in GENMOD
+  // A function with the given component nodes (at least one).
+  explicit Fn(std::vector<NodeId> components);
+  // The scalar function of one DAG node.
+  static Fn of(NodeId node) { return Fn(std::vector<NodeId>{node}); }
+
+  std::size_t dim() const noexcept { return nodes_.size(); }
+  NodeId node(std::size_t j) const { return nodes_.at(j); }
+  std::span<const NodeId> nodes() const noexcept { return nodes_; }
+  // Bit i set if the function depends on x(i).
+  std::uint64_t input_mask() const noexcept;
+  // The coordinates the function depends on, ascending (GENMOD's input_list).
+  std::vector<int> inputs() const;
+  // True when this is a scalar constant (returns the value through `value`).
+  bool is_constant(double* value = nullptr) const noexcept;
+
+  // Projection onto component j (0-based).
+  Fn operator[](std::size_t j) const;
+
+  friend bool operator==(const Fn& a, const Fn& b) noexcept { return a.nodes_ == b.nodes_; }
+
+ private:
+  std::vector<NodeId> nodes_;
+};
+
+// x(i): the parametric coordinate i, 0 <= i < kMaxInputs.
+Fn x(int i);
+// Cartesian product: the components of all parts, in order.
+Fn cat(std::initializer_list<Fn> parts);
+Fn cat(std::span<const Fn> parts);
+
+Fn operator+(const Fn& a, const Fn& b);
+Fn operator-(const Fn& a, const Fn& b);
+Fn operator*(const Fn& a, const Fn& b);
+Fn operator/(const Fn& a, const Fn& b);
+Fn operator-(const Fn& a);
+inline Fn& operator+=(Fn& a, const Fn& b) { return a = a + b; }
+inline Fn& operator-=(Fn& a, const Fn& b) { return a = a - b; }
+inline Fn& operator*=(Fn& a, const Fn& b) { return a = a * b; }
+inline Fn& operator/=(Fn& a, const Fn& b) { return a = a / b; }
+
+// Relational operators return a scalar 0/1 function: the conjunction of the relation over
+// the components (operands of equal dimension, or a scalar broadcast).
+Fn operator<(const Fn& a, const Fn& b);
+Fn operator<=(const Fn& a, const Fn& b);
+Fn operator>(const Fn& a, const Fn& b);
+Fn operator>=(const Fn& a, const Fn& b);
+Fn eq(const Fn& a, const Fn& b);  // GENMOD's ==; operator== compares Fn identity
+Fn ne(const Fn& a, const Fn& b);  // 1 if any component differs
+// Logical operators on scalars: nonzero is true; results are 0/1.
+Fn operator&&(const Fn& a, const Fn& b);
+Fn operator||(const Fn& a, const Fn& b);
+Fn operator!(const Fn& a);
+
+// Elementary functions apply componentwise.
+Fn square(const Fn& a);
+Fn sqrt(const Fn& a);
+Fn exp(const Fn& a);
+Fn log(const Fn& a);
+Fn sin(const Fn& a);
+Fn cos(const Fn& a);
+Fn tan(const Fn& a);
+Fn asin(const Fn& a);
+Fn acos(const Fn& a);
+Fn atan(const Fn& a);
+Fn abs(const Fn& a);
+Fn floor(const Fn& a);
+Fn ceil(const Fn& a);
+Fn pow(const Fn& a, const Fn& b);
+Fn atan2(const Fn& y, const Fn& x);
+Fn min(const Fn& a, const Fn& b);
+Fn max(const Fn& a, const Fn& b);
+// if-then-else: `cond` is scalar (nonzero is true); the branches broadcast like + does.
+Fn select(const Fn& cond, const Fn& then_fn, const Fn& else_fn);
+// GENMOD's error(h): 1 where evaluating the scalar h gives an error, else 0.
+Fn is_error(const Fn& h);
+
+// d f / d x(i), built symbolically (componentwise).
+Fn derivative(const Fn& f, int i);
+// GENMOD's m_eval: f with x(i) replaced by the scalar function g.
+Fn compose(const Fn& f, int i, const Fn& g);
+// GENMOD's m_eval_all: f with x(inputs[k]) replaced by component k of g, all at once.
+Fn compose_all(const Fn& f, std::span<const int> inputs, const Fn& g);
+
+}  // namespace genmod

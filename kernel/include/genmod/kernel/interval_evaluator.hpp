@@ -1,0 +1,50 @@
+// Interval evaluation of a tape over a box (the natural inclusion function), with the
+// per-clause choices that make tape pruning possible.
+//
+//   IntervalEvaluator ev;
+//   auto y = ev.eval(tape, box);          // y[j] contains f_j(x) for every x in the box
+//   Tape shorter = tape.simplify(ev.choices());
+//
+// The whole tape runs inside one RoundingScope (upward rounding), so the cost per clause is
+// close to plain double arithmetic.
+#pragma once
+
+#include "genmod/kernel/interval.hpp"
+#include "genmod/kernel/tape.hpp"
+
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+#include <vector>
+
+namespace genmod {
+
+class IntervalEvaluator {
+ public:
+  // `box[k]` is the range of input k. Throws std::invalid_argument for a wrong dimension or
+  // an illegal interval. The results are valid until the next call.
+  std::span<const Interval> eval(const Tape& tape, std::span<const Interval> box);
+  std::span<const Interval> eval(const Tape& tape, std::initializer_list<Interval> box) {
+    return eval(tape, std::span<const Interval>(box.begin(), box.size()));
+  }
+
+  // ErrorBits of each output: whether an error (NaN at a point) is possible / certain.
+  std::span<const std::uint8_t> errors() const noexcept { return out_err_; }
+  // One Choice per clause of the last tape; feed to Tape::simplify.
+  std::span<const std::uint8_t> choices() const noexcept { return choices_; }
+  // False if the function may be discontinuous (a comparison, floor, select, ... changes
+  // value) or may fail somewhere in the box; derivative-based forms need continuity.
+  bool continuous() const noexcept { return continuous_; }
+
+ private:
+  std::vector<Interval> regs_;
+  std::vector<std::uint8_t> err_;
+  std::vector<Interval> slots_;
+  std::vector<std::uint8_t> slot_err_;
+  std::vector<Interval> out_;
+  std::vector<std::uint8_t> out_err_;
+  std::vector<std::uint8_t> choices_;
+  bool continuous_ = true;
+};
+
+}  // namespace genmod

@@ -1,0 +1,15 @@
+// The public API of the kernel layer.
+#pragma once
+
+#include "genmod/kernel/batch_evaluator.hpp"
+#include "genmod/kernel/custom_op.hpp"
+#include "genmod/kernel/dag.hpp"
+#include "genmod/kernel/fn.hpp"
+#include "genmod/kernel/gradient_evaluator.hpp"
+#include "genmod/kernel/inclusion.hpp"
+#include "genmod/kernel/interval.hpp"
+#include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/kernel/opcode.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/kernel/tape.hpp"
+#include "genmod/kernel/vm_format.hpp"

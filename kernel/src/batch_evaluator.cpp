@@ -1,0 +1,108 @@
+#include "genmod/kernel/batch_evaluator.hpp"
+
+#include "custom_call.hpp"
+#include "point_ops.hpp"
+
+#include <algorithm>
+
+namespace genmod {
+namespace {
+
+// One clause over n points. Plain indexed loops over separate arrays vectorize; the result
+// may alias an operand (same index only), which the compiler's overlap check handles.
+template <Op op>
+inline void run_clause(double* out, const double* a, const double* b, const double* c, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = detail::point_op<op>(a[i], b[i], c[i]);
+}
+
+template <Op op>
+inline void run_clause_imm(double* out, const double* a, double k, std::size_t n) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = detail::point_op<op>(a[i], k, 0.0);
+}
+
+// The tape loop, compiled twice (AVX2 and baseline) and dispatched at load time.
+__attribute__((target_clones("avx2", "default"))) void run_tape(const Clause* clauses, std::size_t num_clauses,
+                                                                 const double* constants, double* regs,
+                                                                 const double* const* inputs, std::size_t offset,
+                                                                 std::size_t n, const Tape& tape,
+                                                                 std::vector<double>& slots, std::vector<double>& args,
+                                                                 std::vector<double>& call_out) {
+  constexpr std::size_t W = BatchEvaluator::kChunk;
+  for (std::size_t ci = 0; ci < num_clauses; ++ci) {
+    const Clause& c = clauses[ci];
+    // Operand rows; fields that are not registers (constant index, input position, slot)
+    // are mapped to row 0 so that no pointer leaves the register file.
+    const int ar = arity(c.op);
+    const bool imm = c.op >= Op::AddImm && c.op <= Op::MaxImm;
+    double* out = regs + std::size_t{c.out} * W;
+    const double* a = regs + (ar >= 1 ? std::size_t{c.a} * W : 0);
+    const double* b = regs + (ar >= 2 && !imm ? std::size_t{c.b} * W : 0);
+    const double* cc = regs + (ar >= 3 ? std::size_t{c.c} * W : 0);
+    switch (c.op) {
+#define GENMOD_UNARY(NAME) \
+  case Op::NAME: run_clause<Op::NAME>(out, a, a, a, n); break;
+#define GENMOD_BINARY(NAME) \
+  case Op::NAME: run_clause<Op::NAME>(out, a, b, a, n); break;
+#define GENMOD_IMM(NAME) \
+  case Op::NAME: run_clause_imm<Op::NAME>(out, a, constants[c.b], n); break;
+      GENMOD_UNARY(Neg) GENMOD_UNARY(Square) GENMOD_UNARY(Sqrt) GENMOD_UNARY(Exp) GENMOD_UNARY(Log)
+      GENMOD_UNARY(Sin) GENMOD_UNARY(Cos) GENMOD_UNARY(Tan) GENMOD_UNARY(Asin) GENMOD_UNARY(Acos)
+      GENMOD_UNARY(Atan) GENMOD_UNARY(Abs) GENMOD_UNARY(Floor) GENMOD_UNARY(Ceil) GENMOD_UNARY(Not)
+      GENMOD_UNARY(IsError)
+      GENMOD_BINARY(Add) GENMOD_BINARY(Sub) GENMOD_BINARY(Mul) GENMOD_BINARY(Div) GENMOD_BINARY(Pow)
+      GENMOD_BINARY(Atan2) GENMOD_BINARY(Min) GENMOD_BINARY(Max) GENMOD_BINARY(Lt) GENMOD_BINARY(Le)
+      GENMOD_BINARY(Gt) GENMOD_BINARY(Ge) GENMOD_BINARY(Eq) GENMOD_BINARY(Ne) GENMOD_BINARY(And)
+      GENMOD_BINARY(Or)
+      GENMOD_IMM(AddImm) GENMOD_IMM(MulImm) GENMOD_IMM(SubImm) GENMOD_IMM(DivImmR) GENMOD_IMM(DivImmL)
+      GENMOD_IMM(MinImm) GENMOD_IMM(MaxImm)
+#undef GENMOD_UNARY
+#undef GENMOD_BINARY
+#undef GENMOD_IMM
+      case Op::Select: run_clause<Op::Select>(out, a, b, cc, n); break;
+      case Op::Const: std::fill(out, out + n, constants[c.a]); break;
+      case Op::Load: std::copy(inputs[c.a] + offset, inputs[c.a] + offset + n, out); break;
+      case Op::Call: {
+        // Custom operators are called point by point; their outputs go to per-slot rows.
+        const CallSite& cs = tape.calls()[c.a];
+        args.resize(cs.num_args);
+        call_out.resize(tape.num_call_slots());
+        for (std::size_t p = 0; p < n; ++p) {
+          for (std::uint32_t i = 0; i < cs.num_args; ++i)
+            args[i] = regs[std::size_t{tape.call_arg_registers()[cs.first_arg + i]} * W + p];
+          detail::run_call_point(tape, c.a, args, call_out);
+          for (std::uint32_t j = 0; j < cs.num_outputs; ++j) slots[(cs.first_slot + j) * W + p] = call_out[cs.first_slot + j];
+        }
+        break;
+      }
+      case Op::CallOut: std::copy(slots.data() + std::size_t{c.a} * W, slots.data() + std::size_t{c.a} * W + n, out); break;
+      default: break;
+    }
+  }
+}
+
+}  // namespace
+
+void BatchEvaluator::eval(const Tape& tape, std::span<const double* const> inputs, std::size_t count,
+                          std::span<double* const> outputs) {
+  detail::check_inputs(tape, inputs.size(), "BatchEvaluator");
+  if (outputs.size() != tape.num_outputs())
+    throw std::invalid_argument("genmod: BatchEvaluator: the tape has " + std::to_string(tape.num_outputs()) +
+                                " outputs, got " + std::to_string(outputs.size()) + " output arrays");
+  regs_.resize(std::size_t{tape.num_registers()} * kChunk);
+  slots_.resize(std::size_t{tape.num_call_slots()} * kChunk);
+  for (std::size_t offset = 0; offset < count; offset += kChunk)
+    run_chunk(tape, inputs, offset, std::min(kChunk, count - offset), outputs);
+}
+
+void BatchEvaluator::run_chunk(const Tape& tape, std::span<const double* const> inputs, std::size_t offset,
+                               std::size_t n, std::span<double* const> outputs) {
+  const auto clauses = tape.clauses();
+  run_tape(clauses.data(), clauses.size(), tape.constants().data(), regs_.data(), inputs.data(), offset, n, tape,
+           slots_, args_, call_out_);
+  for (std::size_t j = 0; j < outputs.size(); ++j) {
+    const double* r = regs_.data() + std::size_t{tape.output_registers()[j]} * kChunk;
+    std::copy(r, r + n, outputs[j] + offset);
+  }
+}
+
+}  // namespace genmod

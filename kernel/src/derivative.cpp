@@ -1,0 +1,185 @@
+// Symbolic differentiation and composition (substitution) over the DAG.
+#include "genmod/kernel/custom_op.hpp"
+#include "genmod/kernel/fn.hpp"
+
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+
+namespace genmod {
+namespace {
+
+using dag::make;
+
+NodeId c(double v) { return dag::constant(v); }
+bool zero(NodeId n) { return dag::is_const(n, 0.0); }
+
+// Products and sums that skip known zeros, so derivative DAGs stay small.
+NodeId mul(NodeId a, NodeId b) { return (zero(a) || zero(b)) ? c(0.0) : make(Op::Mul, a, b); }
+NodeId add(NodeId a, NodeId b) { return make(Op::Add, a, b); }
+NodeId sub(NodeId a, NodeId b) { return make(Op::Sub, a, b); }
+NodeId div(NodeId a, NodeId b) { return zero(a) ? c(0.0) : make(Op::Div, a, b); }
+
+class Differentiator {
+ public:
+  explicit Differentiator(int var) : var_(var) {}
+
+  NodeId d(NodeId id) {
+    const Node& n = dag::node(id);
+    if (!(n.inputs >> var_ & 1u)) return c(0.0);
+    if (auto it = memo_.find(id); it != memo_.end()) return it->second;
+    const NodeId r = rule(id, n);
+    memo_.emplace(id, r);
+    return r;
+  }
+
+ private:
+  NodeId rule(NodeId id, const Node& n) {
+    const NodeId a = n.arg[0], b = n.arg[1];
+    switch (n.op) {
+      case Op::Var: return c(n.index == var_ ? 1.0 : 0.0);
+      case Op::Neg: return make(Op::Neg, d(a));
+      case Op::Add: return add(d(a), d(b));
+      case Op::Sub: return sub(d(a), d(b));
+      case Op::Mul: return add(mul(d(a), b), mul(a, d(b)));
+      case Op::Div: return div(sub(d(a), mul(id, d(b))), b);  // (a' - f b') / b
+      case Op::Square: return mul(mul(c(2.0), a), d(a));
+      case Op::Sqrt: return div(d(a), mul(c(2.0), id));
+      case Op::Exp: return mul(id, d(a));
+      case Op::Log: return div(d(a), a);
+      case Op::Sin: return mul(make(Op::Cos, a), d(a));
+      case Op::Cos: return mul(make(Op::Neg, make(Op::Sin, a)), d(a));
+      case Op::Tan: return mul(add(c(1.0), make(Op::Square, id)), d(a));
+      case Op::Asin: return div(d(a), make(Op::Sqrt, sub(c(1.0), make(Op::Square, a))));
+      case Op::Acos: return make(Op::Neg, div(d(a), make(Op::Sqrt, sub(c(1.0), make(Op::Square, a)))));
+      case Op::Atan: return div(d(a), add(c(1.0), make(Op::Square, a)));
+      case Op::Atan2: {  // atan2(y, x)' = (x y' - y x') / (x^2 + y^2)
+        const NodeId num = sub(mul(b, d(a)), mul(a, d(b)));
+        return div(num, add(make(Op::Square, b), make(Op::Square, a)));
+      }
+      case Op::Abs: {
+        const NodeId da = d(a);
+        return make(Op::Select, make(Op::Lt, a, c(0.0)), make(Op::Neg, da), da);
+      }
+      case Op::Min: return make(Op::Select, make(Op::Lt, a, b), d(a), d(b));  // matches point::min
+      case Op::Max: return make(Op::Select, make(Op::Gt, a, b), d(a), d(b));
+      case Op::Select: return make(Op::Select, a, d(b), d(n.arg[2]));
+      case Op::Pow: {
+        const NodeId db = d(b);
+        // Constant exponent: b a^(b-1) a' (also right for negative bases with integer b).
+        const NodeId power_rule = mul(mul(b, make(Op::Pow, a, sub(b, c(1.0)))), d(a));
+        if (zero(db)) return power_rule;
+        return add(power_rule, mul(mul(id, make(Op::Log, a)), db));
+      }
+      case Op::Custom: return custom_rule(n);
+      // Piecewise constant: derivative 0 wherever it exists.
+      case Op::Floor: case Op::Ceil: case Op::Not: case Op::IsError:
+      case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne:
+      case Op::And: case Op::Or: case Op::Const:
+        return c(0.0);
+      default:
+        throw std::logic_error("genmod: derivative: unexpected op " + std::string(op_name(n.op)));
+    }
+  }
+
+  // Chain rule: sum over arguments k of (d out_j / d arg_k) * arg_k'.
+  NodeId custom_rule(const Node& n) {
+    const CustomOp& op = dag::custom(n.custom);
+    const std::span<const NodeId> args = dag::custom_args(n);
+    std::vector<Fn> arg_fns;
+    for (NodeId a : args) arg_fns.push_back(Fn::of(a));
+    NodeId sum = c(0.0);
+    for (std::size_t k = 0; k < args.size(); ++k) {
+      const NodeId dk = d(args[k]);
+      if (zero(dk)) continue;
+      const Fn partial = op.derivative(arg_fns, static_cast<int>(k));
+      if (partial.dim() != static_cast<std::size_t>(op.num_outputs()))
+        throw std::logic_error("genmod: custom operator '" + op.name() + "' derivative has dimension " +
+                               std::to_string(partial.dim()) + ", expected " + std::to_string(op.num_outputs()));
+      sum = add(sum, mul(partial.node(static_cast<std::size_t>(n.index)), dk));
+    }
+    return sum;
+  }
+
+  int var_;
+  std::unordered_map<NodeId, NodeId> memo_;
+};
+
+// Rebuilds a DAG with some coordinates replaced (simplifying on the way).
+class Substituter {
+ public:
+  explicit Substituter(std::unordered_map<int, NodeId> replace) : replace_(std::move(replace)) {
+    for (const auto& [i, n] : replace_) mask_ |= std::uint64_t{1} << i;
+  }
+
+  NodeId sub(NodeId id) {
+    const Node& n = dag::node(id);
+    if (!(n.inputs & mask_)) return id;
+    if (auto it = memo_.find(id); it != memo_.end()) return it->second;
+    NodeId r;
+    if (n.op == Op::Var) {
+      r = replace_.at(n.index);
+    } else if (n.op == Op::Custom) {
+      std::vector<NodeId> args;
+      for (NodeId a : dag::custom_args(n)) args.push_back(sub(a));
+      r = dag::make_custom(n.custom, n.index, args);
+    } else {
+      NodeId args[3] = {kNoNode, kNoNode, kNoNode};
+      for (int k = 0; k < arity(n.op); ++k) args[k] = sub(n.arg[k]);
+      r = make(n.op, args[0], args[1], args[2]);
+    }
+    memo_.emplace(id, r);
+    return r;
+  }
+
+ private:
+  std::unordered_map<int, NodeId> replace_;
+  std::uint64_t mask_ = 0;
+  std::unordered_map<NodeId, NodeId> memo_;
+};
+
+void check_coordinate(int i, const char* what) {
+  if (i < 0 || i >= kMaxInputs)
+    throw std::invalid_argument(std::string("genmod: ") + what + ": coordinate " + std::to_string(i) +
+                                " is out of range [0, " + std::to_string(kMaxInputs) + ")");
+}
+
+}  // namespace
+
+Fn derivative(const Fn& f, int i) {
+  check_coordinate(i, "derivative");
+  Differentiator diff(i);
+  std::vector<NodeId> out;
+  for (NodeId n : f.nodes()) out.push_back(diff.d(n));
+  return Fn(std::move(out));
+}
+
+Fn compose(const Fn& f, int i, const Fn& g) {
+  check_coordinate(i, "compose");
+  if (g.dim() != 1)
+    throw std::invalid_argument("genmod: compose: the substituted function must be scalar, got dimension " +
+                                std::to_string(g.dim()));
+  Substituter s({{i, g.node(0)}});
+  std::vector<NodeId> out;
+  for (NodeId n : f.nodes()) out.push_back(s.sub(n));
+  return Fn(std::move(out));
+}
+
+Fn compose_all(const Fn& f, std::span<const int> inputs, const Fn& g) {
+  if (inputs.size() != g.dim())
+    throw std::invalid_argument("genmod: compose_all: " + std::to_string(inputs.size()) +
+                                " coordinates but the substituted function has dimension " + std::to_string(g.dim()));
+  std::unordered_map<int, NodeId> replace;
+  for (std::size_t k = 0; k < inputs.size(); ++k) {
+    check_coordinate(inputs[k], "compose_all");
+    if (!replace.emplace(inputs[k], g.node(k)).second)
+      throw std::invalid_argument("genmod: compose_all: coordinate " + std::to_string(inputs[k]) + " appears twice");
+  }
+  Substituter s(std::move(replace));
+  std::vector<NodeId> out;
+  for (NodeId n : f.nodes()) out.push_back(s.sub(n));
+  return Fn(std::move(out));
+}
+
+}  // namespace genmod

@@ -1,0 +1,56 @@
+#include "genmod/kernel/point_evaluator.hpp"
+
+#include "custom_call.hpp"
+#include "point_ops.hpp"
+
+namespace genmod {
+
+std::span<const double> PointEvaluator::eval(const Tape& tape, std::span<const double> point) {
+  detail::check_inputs(tape, point.size(), "PointEvaluator");
+  regs_.resize(tape.num_registers());
+  slots_.resize(tape.num_call_slots());
+  const std::span<const double> k = tape.constants();
+  double* r = regs_.data();
+  for (const Clause& c : tape.clauses()) {
+    switch (c.op) {
+#define GENMOD_CASE(NAME)                                                                                  \
+  case Op::NAME:                                                                                           \
+    r[c.out] = detail::point_op<Op::NAME>(r[c.a], (Op::NAME >= Op::AddImm) ? k[c.b] : r[arity(Op::NAME) >= 2 ? c.b : c.a], \
+                                          r[arity(Op::NAME) >= 3 ? c.c : c.a]);                            \
+    break;
+      GENMOD_FOR_EACH_ARITH_OP(GENMOD_CASE)
+#undef GENMOD_CASE
+      case Op::Const: r[c.out] = k[c.a]; break;
+      case Op::Load: r[c.out] = point[c.a]; break;
+      case Op::Call: {
+        const CallSite& cs = tape.calls()[c.a];
+        args_.resize(cs.num_args);
+        for (std::uint32_t i = 0; i < cs.num_args; ++i) args_[i] = r[tape.call_arg_registers()[cs.first_arg + i]];
+        detail::run_call_point(tape, c.a, args_, slots_);
+        break;
+      }
+      case Op::CallOut: r[c.out] = slots_[c.a]; break;
+      default: break;  // Var / Custom never appear on tapes
+    }
+  }
+  out_.resize(tape.num_outputs());
+  for (std::size_t j = 0; j < out_.size(); ++j) out_[j] = r[tape.output_registers()[j]];
+  return out_;
+}
+
+std::vector<double> evaluate(const Fn& f, std::span<const double> coordinates) {
+  const std::vector<int> inputs = f.inputs();
+  std::vector<double> point;
+  for (int i : inputs) {
+    if (static_cast<std::size_t>(i) >= coordinates.size())
+      throw std::invalid_argument("genmod: evaluate: the function depends on x(" + std::to_string(i) + ") but only " +
+                                  std::to_string(coordinates.size()) + " coordinates were given");
+    point.push_back(coordinates[static_cast<std::size_t>(i)]);
+  }
+  Tape tape(f, inputs);
+  PointEvaluator ev;
+  const auto out = ev.eval(tape, point);
+  return {out.begin(), out.end()};
+}
+
+}  // namespace genmod
