@@ -1,0 +1,215 @@
+// Tapes and evaluators: batch = scalar bitwise, pruning preserves values inside the box,
+// register allocation, and a custom operator through all three methods.
+#include "genmod/kernel/batch_evaluator.hpp"
+#include "genmod/kernel/custom_op.hpp"
+#include "genmod/kernel/gradient_evaluator.hpp"
+#include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/kernel/vm_format.hpp"
+#include "kernel/random_functions.hpp"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cstring>
+
+namespace genmod {
+namespace {
+
+using testing::RandomFunctions;
+
+const std::vector<int> kXyz = {0, 1, 2};
+
+bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+
+// Evaluates `tape` at `count` points with the batch evaluator and compares each output with
+// the scalar evaluator bit for bit.
+void expect_batch_equals_scalar(const Tape& tape, const std::vector<std::vector<double>>& inputs, std::size_t count) {
+  std::vector<const double*> in;
+  for (const auto& v : inputs) in.push_back(v.data());
+  std::vector<std::vector<double>> out(tape.num_outputs(), std::vector<double>(count));
+  std::vector<double*> out_ptrs;
+  for (auto& v : out) out_ptrs.push_back(v.data());
+  BatchEvaluator batch;
+  batch.eval(tape, in, count, out_ptrs);
+  PointEvaluator scalar;
+  std::vector<double> p(inputs.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    for (std::size_t k = 0; k < inputs.size(); ++k) p[k] = inputs[k][i];
+    const auto v = scalar.eval(tape, p);
+    for (std::size_t j = 0; j < v.size(); ++j)
+      ASSERT_TRUE(same_bits(v[j], out[j][i]) || (std::isnan(v[j]) && std::isnan(out[j][i])))
+          << "point " << i << " output " << j << ": scalar " << v[j] << " batch " << out[j][i];
+  }
+}
+
+TEST(Evaluators, BatchEqualsScalarBitwiseOnRandomFunctions) {
+  RandomFunctions rnd(21);
+  for (int trial = 0; trial < 300; ++trial) {
+    const Fn f = cat({rnd.function(6), rnd.function(3)});
+    const Tape tape(f, kXyz);
+    const std::size_t count = static_cast<std::size_t>(rnd.integer(1, 700));  // crosses chunk edges
+    std::vector<std::vector<double>> in(3, std::vector<double>(count));
+    for (auto& v : in)
+      for (auto& x : v) x = rnd.uniform(-4, 4);
+    expect_batch_equals_scalar(tape, in, count);
+  }
+}
+
+TEST(Evaluators, BatchEqualsScalarBitwiseOnProspero) {
+  const Tape tape(load_vm(GENMOD_DATA_DIR "/prospero.vm"), std::vector<int>{0, 1});
+  RandomFunctions rnd(22);
+  const std::size_t count = 3000;
+  std::vector<std::vector<double>> in(2, std::vector<double>(count));
+  for (auto& v : in)
+    for (auto& x : v) x = rnd.uniform(-1, 1);
+  expect_batch_equals_scalar(tape, in, count);
+}
+
+TEST(Evaluators, IntervalAtAPointContainsThePointValue) {
+  RandomFunctions rnd(23);
+  IntervalEvaluator iv;
+  PointEvaluator pv;
+  for (int trial = 0; trial < 1000; ++trial) {
+    const Tape tape(rnd.function(6), kXyz);
+    const std::vector<double> p = {rnd.uniform(-3, 3), rnd.uniform(-3, 3), rnd.uniform(-3, 3)};
+    const double v = pv.eval(tape, p)[0];
+    const std::vector<Interval> box = {Interval(p[0]), Interval(p[1]), Interval(p[2])};
+    const Interval y = iv.eval(tape, box)[0];
+    EXPECT_TRUE(testing::accounts_for(y, iv.errors()[0], v)) << v << " vs " << y;
+  }
+}
+
+TEST(Evaluators, PrunedTapeEqualsFullTapeInsideItsBox) {
+  RandomFunctions rnd(24);
+  IntervalEvaluator iv;
+  PointEvaluator pv;
+  int pruned = 0;
+  for (int trial = 0; trial < 1500; ++trial) {
+    // Min/max-heavy functions, as in CSG.
+    Fn f = rnd.function(3);
+    for (int k = 0; k < 4; ++k) f = (k % 2 ? min(f, rnd.function(3)) : max(f, rnd.function(3)));
+    f = select(x(0) < rnd.uniform(-1, 1), f, rnd.function(3));
+    const Tape tape(f, kXyz);
+    const std::vector<Interval> box = {rnd.small_interval(), rnd.small_interval(), rnd.small_interval()};
+    iv.eval(tape, box);
+    const Tape shorter = tape.simplify(iv.choices());
+    if (shorter.size() < tape.size()) ++pruned;
+    for (int s = 0; s < 20; ++s) {
+      const std::vector<double> p = {rnd.sample(box[0], s), rnd.sample(box[1], s + 1), rnd.sample(box[2], s + 2)};
+      const double full = pv.eval(tape, p)[0];
+      const double fast = pv.eval(shorter, p)[0];
+      ASSERT_TRUE(same_bits(full, fast) || (std::isnan(full) && std::isnan(fast)))
+          << full << " vs " << fast << "\nfull:\n" << tape.disassemble() << "pruned:\n" << shorter.disassemble();
+    }
+  }
+  EXPECT_GT(pruned, 300);
+}
+
+TEST(Evaluators, ProsperoPrunesToAFractionInSmallTiles) {
+  const Tape tape(load_vm(GENMOD_DATA_DIR "/prospero.vm"), std::vector<int>{0, 1});
+  EXPECT_GT(tape.size(), 6000u);          // 7,866 lines less the constants folded into clauses
+  EXPECT_LT(tape.num_registers(), 1000u);  // register allocation packs the values
+  IntervalEvaluator iv;
+  PointEvaluator pv;
+  const std::vector<Interval> box = {Interval(-0.5, -0.48), Interval(0.3, 0.32)};
+  iv.eval(tape, box);
+  const Tape shorter = tape.simplify(iv.choices());
+  EXPECT_LT(shorter.size() * 10, tape.size());
+  RandomFunctions rnd(25);
+  for (int s = 0; s < 200; ++s) {
+    const double p[2] = {rnd.sample(box[0], s), rnd.sample(box[1], s + 1)};
+    EXPECT_EQ(pv.eval(tape, p)[0], pv.eval(shorter, p)[0]);
+  }
+  // Pruning again inside the pruned box keeps working (nested tiles).
+  iv.eval(shorter, std::vector<Interval>{Interval(-0.5, -0.49), Interval(0.3, 0.31)});
+  EXPECT_LE(shorter.simplify(iv.choices()).size(), shorter.size());
+}
+
+TEST(Evaluators, SharedSubexpressionIsEvaluatedOnce) {
+  // Claim 13's sharing: g appears once on the tape of sqrt(g) + g.
+  const Fn g = sin(x(0)) * cos(x(1)) + 2.0;
+  const Tape t(sqrt(g) + g);
+  int sines = 0;
+  for (const Clause& c : t.clauses()) sines += c.op == Op::Sin;
+  EXPECT_EQ(sines, 1);
+  EXPECT_EQ(t.size(), 8u);  // load, sin, load, cos, mul, add-imm, sqrt, add
+}
+
+TEST(Evaluators, WrongDimensionsAreReported) {
+  const Tape t(x(0) + x(1));
+  PointEvaluator pv;
+  IntervalEvaluator iv;
+  EXPECT_THROW(pv.eval(t, {1.0}), std::invalid_argument);
+  EXPECT_THROW(iv.eval(t, std::vector<Interval>{Interval(0, 1)}), std::invalid_argument);
+  EXPECT_THROW(Tape(x(0) + x(5), std::vector<int>{0, 1}), std::invalid_argument);
+  EXPECT_THROW(Tape(x(0), std::vector<int>{0, 0}), std::invalid_argument);
+  EXPECT_THROW(t.simplify(std::vector<std::uint8_t>(1)), std::invalid_argument);
+}
+
+// A custom operator: the unit circle c(t) = (cos 2 pi t, sin 2 pi t) with a rigorous
+// inclusion from the elementary enclosures and an exact symbolic derivative.
+class UnitCircle : public CustomOp {
+ public:
+  std::string name() const override { return "unit-circle"; }
+  int num_args() const override { return 1; }
+  int num_outputs() const override { return 2; }
+  void eval(std::span<const double> args, std::span<double> out) const override {
+    ++calls;
+    out[0] = std::cos(2 * M_PI * args[0]);
+    out[1] = std::sin(2 * M_PI * args[0]);
+  }
+  void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t>) const override {
+    const Interval two_pi(6.283185307179586, 6.2831853071795872);  // encloses 2 pi
+    const Interval angle = args[0] * two_pi;
+    out[0] = cos(angle);
+    out[1] = sin(angle);
+  }
+  Fn derivative(std::span<const Fn> args, int) const override {
+    const double w = 2 * M_PI;
+    return cat({-w * sin(w * args[0]), w * cos(w * args[0])});
+  }
+  mutable std::atomic<int> calls{0};
+};
+
+TEST(Evaluators, CustomOperatorThroughAllThreeMethods) {
+  auto op = std::make_shared<UnitCircle>();
+  const Fn c = apply(op, {square(x(0))});  // composed with t = u^2
+  ASSERT_EQ(c.dim(), 2u);
+  const Fn r2 = square(c[0]) + square(c[1]);
+  const Tape t(cat({c, r2}));
+  PointEvaluator pv;
+  const double u = 0.3;
+  op->calls = 0;
+  const auto v = pv.eval(t, {u});
+  EXPECT_EQ(op->calls.load(), 1);  // both outputs from one call
+  EXPECT_NEAR(v[0], std::cos(2 * M_PI * u * u), 1e-15);
+  EXPECT_NEAR(v[2], 1.0, 1e-15);
+  // Inclusion through the tape.
+  IntervalEvaluator iv;
+  const auto y = iv.eval(t, std::vector<Interval>{Interval(0.2, 0.4)});
+  for (double s = 0.2; s <= 0.4; s += 0.01) {
+    EXPECT_TRUE(y[0].contains(std::cos(2 * M_PI * s * s)));
+    EXPECT_TRUE(y[1].contains(std::sin(2 * M_PI * s * s)));
+  }
+  // Symbolic derivative (chain rule through the operator) and the gradient evaluator.
+  const Fn dc = derivative(c, 0);
+  const auto d = evaluate(dc, std::vector<double>{u});
+  EXPECT_NEAR(d[0], -2 * M_PI * std::sin(2 * M_PI * u * u) * 2 * u, 1e-12);
+  EXPECT_NEAR(d[1], 2 * M_PI * std::cos(2 * M_PI * u * u) * 2 * u, 1e-12);
+  GradientEvaluator g;
+  g.eval(t, std::vector<double>{u});
+  EXPECT_NEAR(g.jacobian()[0], d[0], 1e-12);
+  EXPECT_NEAR(g.jacobian()[1], d[1], 1e-12);
+  EXPECT_NEAR(g.jacobian()[2], 0.0, 1e-12);
+  // Batch evaluation equals scalar.
+  std::vector<double> in(50);
+  for (std::size_t i = 0; i < in.size(); ++i) in[i] = 0.02 * static_cast<double>(i);
+  expect_batch_equals_scalar(t, {in}, in.size());
+  // Composition substitutes inside the operator's arguments.
+  EXPECT_NEAR(evaluate(compose(c, 0, Fn(0.5)), std::vector<double>{})[0], std::cos(2 * M_PI * 0.25), 1e-15);
+  EXPECT_THROW(apply(op, {x(0), x(1)}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace genmod

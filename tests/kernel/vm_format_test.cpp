@@ -1,0 +1,83 @@
+// Reading and writing the .vm text format.
+#include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/kernel/tape.hpp"
+#include "genmod/kernel/vm_format.hpp"
+#include "kernel/random_functions.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+namespace genmod {
+namespace {
+
+Fn read(const std::string& text) {
+  std::istringstream in(text);
+  return read_vm(in, "test.vm");
+}
+
+// The line number and problem of a malformed file.
+std::string error_of(const std::string& text, int* line = nullptr) {
+  try {
+    read(text);
+  } catch (const VmFormatError& e) {
+    if (line) *line = e.line();
+    return e.what();
+  }
+  return "";
+}
+
+TEST(VmFormat, ReadsProspero) {
+  const Fn f = load_vm(GENMOD_DATA_DIR "/prospero.vm");
+  EXPECT_EQ(f.dim(), 1u);
+  EXPECT_EQ(f.inputs(), (std::vector<int>{0, 1}));
+  const Tape t(f);
+  // 7,866 lines; constants become immediates of the clauses that use them.
+  EXPECT_GT(t.size(), 6000u);
+  EXPECT_LT(t.size(), 7866u);
+}
+
+TEST(VmFormat, EvaluatesAsWritten) {
+  const Fn f = read("# a circle of radius 0.5\n_0 var-x\n_1 var-y\n_2 square _0\n_3 square _1\n_4 add _2 _3\n"
+                    "_5 sqrt _4\n_6 const 0.5\n_7 sub _5 _6\n");
+  EXPECT_DOUBLE_EQ(evaluate(f, std::vector<double>{0.3, 0.4})[0], 0.0);
+  EXPECT_DOUBLE_EQ(evaluate(f, std::vector<double>{0.0, 1.0})[0], 0.5);
+  const Fn g = read("a var-z\nb ln a\nc var-7\nd mul b c\n");
+  EXPECT_EQ(g.inputs(), (std::vector<int>{2, 7}));
+}
+
+TEST(VmFormat, MalformedFilesNameTheLineAndProblem) {
+  int line = 0;
+  EXPECT_NE(error_of("_0 var-x\n_1 frobnicate _0\n", &line).find("unknown opcode 'frobnicate'"), std::string::npos);
+  EXPECT_EQ(line, 2);
+  EXPECT_NE(error_of("_0 var-x\n\n# note\n_1 add _0 _9\n", &line).find("'_9' is not defined"), std::string::npos);
+  EXPECT_EQ(line, 4);
+  EXPECT_NE(error_of("_0 var-x\n_0 var-y\n", &line).find("defined twice"), std::string::npos);
+  EXPECT_NE(error_of("_0 const 1.5x\n").find("not a number"), std::string::npos);
+  EXPECT_NE(error_of("_0 var-x\n_1 add _0\n").find("takes 2 operand(s), got 1"), std::string::npos);
+  EXPECT_NE(error_of("_0 var-q\n").find("not a coordinate"), std::string::npos);
+  EXPECT_NE(error_of("lonely\n").find("expected 'NAME OPCODE ARGS"), std::string::npos);
+  EXPECT_NE(error_of("# nothing\n").find("defines nothing"), std::string::npos);
+  EXPECT_NE(error_of("_0 var-x\n_1 add _0 _0\n").find(""), std::string::npos);
+  EXPECT_EQ(error_of("_0 var-x\n_1 add _0 _0\n"), "");
+  EXPECT_THROW(load_vm("/nonexistent/model.vm"), std::runtime_error);
+}
+
+TEST(VmFormat, WriteThenReadGivesTheSameFunction) {
+  testing::RandomFunctions rnd(31);
+  for (int trial = 0; trial < 200; ++trial) {
+    const Fn f = rnd.function(6);
+    std::ostringstream out;
+    write_vm(out, f);
+    const Fn g = read(out.str());
+    EXPECT_EQ(g.node(0), f.node(0)) << out.str();  // hash-consing makes equal DAGs identical
+  }
+  const Fn prospero = load_vm(GENMOD_DATA_DIR "/prospero.vm");
+  std::ostringstream out;
+  write_vm(out, prospero);
+  EXPECT_EQ(read(out.str()).node(0), prospero.node(0));
+  EXPECT_THROW(write_vm(out, cat({x(0), x(1)})), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace genmod
