@@ -1,0 +1,29 @@
+// The subcommands of the genmod program and how they report problems.
+#pragma once
+
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace genmod::app {
+
+// A problem with the command line (exit code 2); other exceptions are failures (exit code 1).
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Command {
+  std::string_view name;
+  std::string_view usage;    // arguments after the command name
+  std::string_view summary;  // one line for `genmod --help`
+  std::string_view details;  // option descriptions for `genmod COMMAND --help`
+  // Runs the command on the arguments after its name; returns the exit code.
+  int (*run)(std::span<const std::string> args);
+};
+
+extern const Command kRenderCommand;
+extern const Command kInfoCommand;
+
+}  // namespace genmod::app

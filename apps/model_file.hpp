@@ -1,0 +1,18 @@
+// Loading the model files the commands take.
+#pragma once
+
+#include "genmod/kernel/fn.hpp"
+#include "genmod/kernel/tape.hpp"
+
+#include <string>
+
+namespace genmod::app {
+
+// A .vm model; std::runtime_error (naming the path) if it cannot be read or parsed.
+Fn load_model(const std::string& path);
+
+// A model of x and y only, compiled with inputs (x, y); std::runtime_error naming the path
+// and the extra coordinate otherwise.
+Tape load_planar_model(const std::string& path);
+
+}  // namespace genmod::app

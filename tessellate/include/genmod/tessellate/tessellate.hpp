@@ -1,0 +1,6 @@
+// The public API of the tessellate layer.
+#pragma once
+
+#include "genmod/tessellate/image.hpp"
+#include "genmod/tessellate/png_io.hpp"
+#include "genmod/tessellate/raster2d.hpp"
