@@ -1,14 +1,15 @@
 // Elementary enclosures: genmod's own outward-rounded versions of the C library functions.
 //
-// Method. Each function evaluates the C library (glibc's libm) at the ends of the argument,
-// in whatever rounding mode is current, and widens each result outward by a few one-ulp bit
-// steps (interval_detail::next_down / next_up, which do not depend on the rounding mode). The
-// function's monotonicity, or for sin / cos / tan its quadrant structure, says which ends give
-// which bounds. Each bound is then clamped by what is known exactly about the function: its
-// range (|sin| <= 1, exp >= 0, ...) and on which side of a special value the true value lies
-// (exp x >= 1 for x >= 0, atan x >= 0 for x >= 0, sin x >= 0 in quadrants 0 and 1, ...).
-// This keeps exact values exact (cos 0 = 1, exp 0 = 1, log 1 = 0, atan 0 = 0, so that
-// log([0, 1]) = [-inf, 0] holds without ulp noise) and bounds on the right side of them.
+// Method. Each function evaluates the C library (glibc's libm) at the ends of the argument (the
+// corners of the box for atan2 and pow), in whatever rounding mode is current, and widens each
+// result outward by a few one-ulp bit steps (interval_detail::next_down / next_up, which do
+// not depend on the rounding mode). The function's monotonicity, or for sin / cos / tan its
+// quadrant structure, says which ends give which bounds. Each bound is then clamped by what
+// is known exactly about the function: its range (|sin| <= 1, exp >= 0, ...) and on which
+// side of a special value the true value lies (exp x >= 1 for x >= 0, atan x >= 0 for x >= 0,
+// sin x >= 0 in quadrants 0 and 1, ...). This keeps exact values exact (cos 0 = 1, exp 0 = 1,
+// log 1 = 0, atan 0 = 0, so that log([0, 1]) = [-inf, 0] holds without ulp noise) and bounds
+// on the right side of them.
 //
 // How far to widen. glibc's double functions are not correctly rounded but carry small,
 // documented errors in every rounding mode (glibc's libm-test-ulps lists them per mode;
@@ -50,8 +51,9 @@ constexpr int kUlpsStable = 2;
 constexpr int kUlpsDirected = 3;
 
 // Width thresholds for the periodic functions. `b - a` is computed in the current rounding
-// mode (error below one ulp, ~1e-15), so a threshold a little below the period is safe:
-// any interval at least a full period wide certainly passes it.
+// mode (error below one ulp, ~1e-15), so with a threshold a little below the period every
+// interval a full period wide is caught; the few narrower ones caught too just get the
+// (still valid) whole range.
 constexpr double kBelowTwoPi = 6.28;
 constexpr double kBelowPi = 3.14;
 
@@ -89,8 +91,10 @@ void flag(std::uint8_t* err, std::uint8_t bits) noexcept {
 // divide(): it only arises from a certain error upstream.
 Interval restrict_to_domain(const Interval& x, double dlo, double dhi, std::uint8_t* err) noexcept {
   const Interval inside = intersect(x, Interval::unchecked(dlo, dhi));
-  if (inside.is_empty()) flag(err, kCertainError);
-  else if (x.lo() < dlo || x.hi() > dhi) flag(err, kMaybeError);
+  if (inside.is_empty())
+    flag(err, kCertainError);
+  else if (x.lo() < dlo || x.hi() > dhi)
+    flag(err, kMaybeError);
   return inside;
 }
 
@@ -120,7 +124,7 @@ double sqrt_hi(double v) noexcept {
 
 // ---- sin, cos and tan ---------------------------------------------------------------------
 
-// Where no nonzero double is closer to a multiple of pi/2: below 1.5 (< pi/2) only 0 is.
+// Below 1.5 in magnitude (< pi/2) the only multiple of pi/2 is 0, so signs follow from x.
 constexpr double kNearZero = 1.5;
 
 // Large arguments. glibc reduces |x| >= 105414350 (~2^26.65) modulo pi/2 with a double-double
@@ -409,8 +413,7 @@ Interval pow(const Interval& x, const Interval& y, std::uint8_t* err) noexcept {
   flag(err, pow_errors(x, y, y_has_integer));
   Interval value = Interval::empty();
   if (x.hi() >= 0.0) value = pow_nonnegative_base(std::max(x.lo(), 0.0), x.hi(), y);
-  if (x.lo() < 0.0 && y_has_integer)
-    value = hull(value, pow_negative_base(x.lo(), std::min(x.hi(), 0.0), kl, kh));
+  if (x.lo() < 0.0 && y_has_integer) value = hull(value, pow_negative_base(x.lo(), std::min(x.hi(), 0.0), kl, kh));
   return value;
 }
 

@@ -100,20 +100,36 @@ inline Interval logic(Op op, const Interval& a, const Interval& b, bool& ambiguo
   return kUnknown;
 }
 
-inline Interval min_or_max(bool is_min, const Interval& a, const Interval& b) {
+// min / max; an empty operand (a certain error) gives an empty result (NaN bounds).
+inline Interval min_of(const Interval& a, const Interval& b) {
   if (a.is_empty() || b.is_empty()) return Interval::empty();
-  return is_min ? Interval::unchecked(std::min(a.lo(), b.lo()), std::min(a.hi(), b.hi()))
-                : Interval::unchecked(std::max(a.lo(), b.lo()), std::max(a.hi(), b.hi()));
+  return Interval::unchecked(std::min(a.lo(), b.lo()), std::min(a.hi(), b.hi()));
+}
+inline Interval max_of(const Interval& a, const Interval& b) {
+  if (a.is_empty() || b.is_empty()) return Interval::empty();
+  return Interval::unchecked(std::max(a.lo(), b.lo()), std::max(a.hi(), b.hi()));
 }
 
-// Choice of min(a, b) (or max with the roles of the bounds swapped): one side only when it is
-// strictly on its side over the whole box and the dropped side cannot be an error (which
-// would propagate at a point). Ties keep both, so pruning never changes a signed zero.
+// Choice of min(a, b): one side only when it is strictly below the other over the whole box
+// and the dropped side cannot be an error (which would propagate at a point). Ties keep
+// both, so pruning never changes a signed zero. NaN bounds (empty) compare false: both.
 inline std::uint8_t min_choice(const Interval& a, const Interval& b, std::uint8_t ea, std::uint8_t eb) {
-  if (a.is_empty() || b.is_empty()) return kChoiceBoth;
   if (a.hi() < b.lo() && eb == kNoError) return kChoiceFirst;
   if (b.hi() < a.lo() && ea == kNoError) return kChoiceSecond;
   return kChoiceBoth;
+}
+inline std::uint8_t max_choice(const Interval& a, const Interval& b, std::uint8_t ea, std::uint8_t eb) {
+  if (a.lo() > b.hi() && eb == kNoError) return kChoiceFirst;
+  if (b.lo() > a.hi() && ea == kNoError) return kChoiceSecond;
+  return kChoiceBoth;
+}
+
+// Rounded sums inside the RoundingScope (upward): the upper bound rounds up directly, the
+// lower bound is -(-a - b) (Boost's "opposite" trick). An empty operand's NaN bounds
+// propagate, so no emptiness test is needed.
+inline double barrier(double x) { return interval_detail::RoundingControl::force_rounding(x); }
+inline Interval add_up(double alo, double ahi, double blo, double bhi) {
+  return Interval::unchecked(-barrier(-alo - blo), barrier(ahi + bhi));
 }
 
 inline Interval rounded_floor_like(const Interval& x, bool is_floor, bool& jump) {
@@ -138,159 +154,122 @@ std::span<const Interval> IntervalEvaluator::eval(const Tape& tape, std::span<co
   slots_.resize(tape.num_call_slots());
   slot_err_.resize(tape.num_call_slots());
   choices_.assign(clauses.size(), kChoiceBoth);
+  clauses_base_ = clauses.data();
   bool jump = false;  // some discontinuity may lie in the box
 
   Interval* r = regs_.data();
   std::uint8_t* e = err_.data();
+  std::uint8_t* choice = choices_.data();
   {
     RoundingScope up;
     for (std::size_t i = 0; i < clauses.size(); ++i) {
       const Clause& c = clauses[i];
-      // Leaves and calls use `a` as an index into other tables, not as a register.
-      const std::uint32_t ra = arity(c.op) >= 1 ? c.a : 0;
-      const Interval a = r[ra];
-      const std::uint8_t ea = e[ra];
-      std::uint8_t err = ea;  // default: unary propagation
-      Interval v;
+      // Operands are looked up only by the cases that have them: leaves and calls use `a` as
+      // an index into other tables, and immediate forms use `b` for the constant.
+      const auto A = [&]() -> const Interval& { return r[c.a]; };
+      const auto B = [&]() -> const Interval& { return r[c.b]; };
+      const std::uint32_t out = c.out;
       switch (c.op) {
-        case Op::Const:
-          v = Interval(k[c.a]);
-          err = v.is_empty() ? kCertainError : kNoError;
+        // The most frequent operations first (Prospero: max, sub, add-imm, min, neg).
+        case Op::Max:
+          choice[i] = max_choice(A(), B(), e[c.a], e[c.b]);
+          e[out] = e[c.a] | e[c.b];
+          r[out] = max_of(A(), B());
           break;
-        case Op::Load:
-          v = box[c.a];
-          err = v.is_empty() ? kCertainError : kNoError;
+        case Op::Min:
+          choice[i] = min_choice(A(), B(), e[c.a], e[c.b]);
+          e[out] = e[c.a] | e[c.b];
+          r[out] = min_of(A(), B());
           break;
-        case Op::Neg: v = Interval::unchecked(-a.hi(), -a.lo()); break;
-        case Op::Square: v = cook(boost::numeric::square(raw(a))); break;
-        case Op::Sqrt: v = fast_sqrt(a, err); break;
-        case Op::Exp: v = exp(a); break;
-        case Op::Log: v = log(a, &err); break;
-        case Op::Sin: v = sin(a); err |= has_inf(a) ? kMaybeError : kNoError; break;
-        case Op::Cos: v = cos(a); err |= has_inf(a) ? kMaybeError : kNoError; break;
-        case Op::Tan: v = tan(a); err |= has_inf(a) ? kMaybeError : kNoError; break;
-        case Op::Asin: v = asin(a, &err); break;
-        case Op::Acos: v = acos(a, &err); break;
-        case Op::Atan: v = atan(a); break;
-        case Op::Abs: v = abs(a); break;
-        case Op::Floor: v = rounded_floor_like(a, true, jump); break;
-        case Op::Ceil: v = rounded_floor_like(a, false, jump); break;
-        case Op::Not:
-          v = a.is_empty() ? a : surely_false(a) ? kTrue : surely_true(a) ? kFalse : (jump = true, kUnknown);
-          break;
-        case Op::IsError:
-          v = ea == kNoError ? kFalse : ea == kCertainError ? kTrue : (jump = true, kUnknown);
-          err = kNoError;
-          break;
-        case Op::AddImm: v = cook(raw(a) + k[c.b]); break;
-        case Op::MulImm:
-          v = cook(raw(a) * k[c.b]);
-          if (k[c.b] == 0.0 && unbounded(a)) err |= kMaybeError;  // 0 * inf
-          break;
-        case Op::SubImm: v = cook(k[c.b] - raw(a)); break;
-        case Op::DivImmR: v = raw_divide(a, Interval(k[c.b]), err); break;
-        case Op::DivImmL: v = raw_divide(Interval(k[c.b]), a, err); break;
-        case Op::MinImm:
-        case Op::MaxImm: {
-          const bool is_min = c.op == Op::MinImm;
-          const Interval kb(k[c.b]);
-          v = min_or_max(is_min, a, kb);
-          choices_[i] = is_min ? min_choice(a, kb, ea, kNoError) : min_choice(-a, -kb, ea, kNoError);
+        case Op::Add: {
+          const Interval v = add_up(A().lo(), A().hi(), B().lo(), B().hi());
+          e[out] = e[c.a] | e[c.b] | (std::isfinite(v.lo() + v.hi()) ? std::uint8_t{kNoError} : overflow_add(A(), B()));
+          r[out] = v;
           break;
         }
+        case Op::Sub: {
+          const Interval v = add_up(A().lo(), A().hi(), -B().hi(), -B().lo());
+          e[out] = e[c.a] | e[c.b] | (std::isfinite(v.lo() + v.hi()) ? std::uint8_t{kNoError} : overflow_add(A(), -B()));
+          r[out] = v;
+          break;
+        }
+        case Op::AddImm: {
+          const double kb = k[c.b];  // finite (see the tape compiler)
+          e[out] = e[c.a];
+          r[out] = add_up(A().lo(), A().hi(), kb, kb);
+          break;
+        }
+        case Op::SubImm: {
+          const double kb = k[c.b];
+          e[out] = e[c.a];
+          r[out] = add_up(kb, kb, -A().hi(), -A().lo());
+          break;
+        }
+        case Op::Neg:
+          e[out] = e[c.a];
+          r[out] = -A();
+          break;
+        case Op::MaxImm: {
+          const Interval kb(k[c.b]);
+          choice[i] = max_choice(A(), kb, e[c.a], kNoError);
+          e[out] = e[c.a];
+          r[out] = max_of(A(), kb);
+          break;
+        }
+        case Op::MinImm: {
+          const Interval kb(k[c.b]);
+          choice[i] = min_choice(A(), kb, e[c.a], kNoError);
+          e[out] = e[c.a];
+          r[out] = min_of(A(), kb);
+          break;
+        }
+        case Op::Square:
+          e[out] = e[c.a];
+          r[out] = cook(boost::numeric::square(raw(A())));
+          break;
+        case Op::Sqrt: {
+          std::uint8_t err = e[c.a];
+          r[out] = fast_sqrt(A(), err);
+          e[out] = err;
+          break;
+        }
+        case Op::Mul:
+          e[out] = e[c.a] | e[c.b] | (std::isfinite(A().lo() + A().hi() + B().lo() + B().hi()) ? std::uint8_t{kNoError} : overflow_mul(A(), B()));
+          r[out] = cook(raw(A()) * raw(B()));
+          break;
+        case Op::MulImm:
+          // 0 * inf at a point is NaN: an unbounded operand times 0 may be an error.
+          e[out] = e[c.a] | ((k[c.b] == 0.0 && unbounded(A())) ? kMaybeError : kNoError);
+          r[out] = cook(raw(A()) * k[c.b]);
+          break;
+        case Op::Const: {
+          const Interval v(k[c.a]);
+          e[out] = v.is_empty() ? kCertainError : kNoError;
+          r[out] = v;
+          break;
+        }
+        case Op::Load:
+          e[out] = box[c.a].is_empty() ? kCertainError : kNoError;
+          r[out] = box[c.a];
+          break;
         case Op::Call: {
-          // Custom operators use protected arithmetic in the default rounding mode.
-          const CallSite& cs = tape.calls()[c.a];
-          std::vector<Interval> args(cs.num_args);
-          std::uint8_t arg_err = kNoError;
-          for (std::uint32_t j = 0; j < cs.num_args; ++j) {
-            const std::uint32_t reg = tape.call_arg_registers()[cs.first_arg + j];
-            args[j] = r[reg];
-            arg_err |= e[reg];
-          }
-          std::fesetround(FE_TONEAREST);
-          std::fill_n(slot_err_.begin() + cs.first_slot, cs.num_outputs, arg_err);
-          dag::custom(cs.op_id).inclusion(args, std::span(slots_).subspan(cs.first_slot, cs.num_outputs),
-                                          std::span(slot_err_).subspan(cs.first_slot, cs.num_outputs));
-          std::fesetround(FE_UPWARD);
+          call(tape, c.a);
           jump = true;  // continuity of custom operators is not known
-          continue;
+          break;
         }
         case Op::CallOut:
-          v = slots_[c.a];
-          err = slot_err_[c.a];
+          e[out] = slot_err_[c.a];
+          r[out] = slots_[c.a];
           break;
         default: {
-          const Interval b = r[c.b];
-          const std::uint8_t eb = e[c.b];
-          err = ea | eb;
-          switch (c.op) {
-            case Op::Add:
-              v = cook(raw(a) + raw(b));
-              if (unbounded(a, b)) err |= overflow_add(a, b);
-              break;
-            case Op::Sub:
-              v = cook(raw(a) - raw(b));
-              if (unbounded(a, b)) err |= overflow_add(a, -b);
-              break;
-            case Op::Mul:
-              v = cook(raw(a) * raw(b));
-              if (unbounded(a, b)) err |= overflow_mul(a, b);
-              break;
-            case Op::Div:
-              v = raw_divide(a, b, err);
-              if (has_inf(a) && has_inf(b)) err |= kMaybeError;
-              break;
-            case Op::Pow:
-              v = pow(a, b, &err);
-              if (unbounded(a, b)) err |= kMaybeError;
-              break;
-            case Op::Atan2:
-              v = atan2(a, b);
-              if (v.width() >= std::numbers::pi) jump = true;  // may straddle the branch cut
-              break;
-            case Op::Min:
-              v = min_or_max(true, a, b);
-              choices_[i] = min_choice(a, b, ea, eb);
-              break;
-            case Op::Max:
-              v = min_or_max(false, a, b);
-              choices_[i] = min_choice(-a, -b, ea, eb);
-              break;
-            case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne:
-              v = relation(c.op, a, b, jump);
-              break;
-            case Op::And: case Op::Or: v = logic(c.op, a, b, jump); break;
-            case Op::Select: {
-              const Interval& otherwise = r[c.c];
-              const std::uint8_t ec = e[c.c];
-              if (a.is_empty()) {
-                v = a;
-              } else if (surely_true(a)) {
-                v = b;
-                err = ea | eb;
-                if (ea == kNoError) choices_[i] = kChoiceFirst;
-              } else if (surely_false(a)) {
-                v = otherwise;
-                err = ea | ec;
-                if (ea == kNoError) choices_[i] = kChoiceSecond;
-              } else {
-                // Either branch may be taken: an error in one is only possible, not certain.
-                v = hull(b, otherwise);
-                const std::uint8_t branch_err =
-                    (eb == kCertainError && ec == kCertainError) ? kCertainError : ((eb | ec) & kMaybeError);
-                err = ea | branch_err;
-                jump = true;
-              }
-              break;
-            }
-            default: break;
-          }
+          const std::uint8_t ea = e[c.a];
+          std::uint8_t err = ea;
+          const Interval v = other_op(c, k, err, jump);
+          e[out] = err;
+          r[out] = v;
+          break;
         }
       }
-      if (v.is_empty()) err |= kCertainError;
-      r[c.out] = v;
-      e[c.out] = err;
     }
   }
   out_.resize(tape.num_outputs());
@@ -302,6 +281,105 @@ std::span<const Interval> IntervalEvaluator::eval(const Tape& tape, std::span<co
     if (out_err_[j] != kNoError) continuous_ = false;
   }
   return out_;
+}
+
+// The less frequent operations, out of the hot loop. `err` holds the first operand's error
+// bits on entry.
+Interval IntervalEvaluator::other_op(const Clause& c, std::span<const double> k, std::uint8_t& err, bool& jump) {
+  const std::uint8_t ea = err;
+  const Interval& a = regs_[c.a];  // every operation here has a first operand
+  switch (c.op) {
+    case Op::Exp: return exp(a);
+    case Op::Log: return log(a, &err);
+    case Op::Sin: err |= has_inf(a) ? kMaybeError : kNoError; return sin(a);
+    case Op::Cos: err |= has_inf(a) ? kMaybeError : kNoError; return cos(a);
+    case Op::Tan: err |= has_inf(a) ? kMaybeError : kNoError; return tan(a);
+    case Op::Asin: return asin(a, &err);
+    case Op::Acos: return acos(a, &err);
+    case Op::Atan: return atan(a);
+    case Op::Abs: return abs(a);
+    case Op::Floor: return rounded_floor_like(a, true, jump);
+    case Op::Ceil: return rounded_floor_like(a, false, jump);
+    case Op::Not:
+      if (a.is_empty()) return a;
+      if (surely_false(a)) return kTrue;
+      if (surely_true(a)) return kFalse;
+      jump = true;
+      return kUnknown;
+    case Op::IsError:
+      err = kNoError;
+      if (ea == kNoError) return kFalse;
+      if (ea == kCertainError) return kTrue;
+      jump = true;
+      return kUnknown;
+    case Op::DivImmR: return raw_divide(a, Interval(k[c.b]), err);
+    case Op::DivImmL: return raw_divide(Interval(k[c.b]), a, err);
+    default: break;
+  }
+  // Binary and ternary operations.
+  const Interval& b = regs_[c.b];
+  const std::uint8_t eb = err_[c.b];
+  err = ea | eb;
+  switch (c.op) {
+    case Op::Div: {
+      const Interval v = raw_divide(a, b, err);
+      if (has_inf(a) && has_inf(b)) err |= kMaybeError;  // inf / inf
+      return v;
+    }
+    case Op::Pow: {
+      const Interval v = pow(a, b, &err);
+      if (unbounded(a, b)) err |= kMaybeError;
+      return v;
+    }
+    case Op::Atan2: {
+      const Interval v = atan2(a, b);
+      if (v.width() >= std::numbers::pi) jump = true;  // may straddle the branch cut
+      return v;
+    }
+    case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne:
+      return relation(c.op, a, b, jump);
+    case Op::And: case Op::Or: return logic(c.op, a, b, jump);
+    case Op::Select: {
+      const Interval& otherwise = regs_[c.c];
+      const std::uint8_t ec = err_[c.c];
+      if (a.is_empty()) return a;
+      if (surely_true(a)) {
+        err = ea | eb;
+        if (ea == kNoError) choices_[&c - clauses_base_] = kChoiceFirst;
+        return b;
+      }
+      if (surely_false(a)) {
+        err = ea | ec;
+        if (ea == kNoError) choices_[&c - clauses_base_] = kChoiceSecond;
+        return otherwise;
+      }
+      // Either branch may be taken: an error in one is only possible, not certain.
+      const std::uint8_t branch_err =
+          (eb == kCertainError && ec == kCertainError) ? kCertainError : ((eb | ec) & kMaybeError);
+      err = ea | branch_err;
+      jump = true;
+      return hull(b, otherwise);
+    }
+    default: return Interval::entire();  // not reached: every opcode is handled
+  }
+}
+
+// Runs custom call site `call`; custom operators use protected arithmetic in the default
+// rounding mode, so the evaluator's upward mode is suspended around them.
+void IntervalEvaluator::call(const Tape& tape, std::uint32_t call) {
+  const CallSite& cs = tape.calls()[call];
+  call_args_.resize(cs.num_args);
+  std::uint8_t arg_err = kNoError;
+  for (std::uint32_t j = 0; j < cs.num_args; ++j) {
+    const std::uint32_t reg = tape.call_arg_registers()[cs.first_arg + j];
+    call_args_[j] = regs_[reg];
+    arg_err |= err_[reg];
+  }
+  std::fill_n(slot_err_.begin() + cs.first_slot, cs.num_outputs, arg_err);
+  std::fesetround(FE_TONEAREST);
+  dag::custom(cs.op_id).inclusion(call_args_, std::span(slots_).subspan(cs.first_slot, cs.num_outputs),
+                                  std::span(slot_err_).subspan(cs.first_slot, cs.num_outputs));
+  std::fesetround(FE_UPWARD);
 }
 
 }  // namespace genmod

@@ -75,14 +75,20 @@ class Sampler {
   // A finite double: mostly moderate, sometimes huge, tiny, integral or special.
   double number() {
     switch (integer(0, 5)) {
-      case 0: return uniform(-4.0, 4.0);
-      case 1: return uniform(-100.0, 100.0);
-      case 2: return std::round(uniform(-6.0, 6.0));
-      case 3: return (chance(0.5) ? -1.0 : 1.0) * std::pow(10.0, uniform(-30.0, 30.0));
-      case 4: return (chance(0.5) ? -1.0 : 1.0) * std::pow(10.0, uniform(-310.0, 308.0));
+      case 0:
+        return uniform(-4.0, 4.0);
+      case 1:
+        return uniform(-100.0, 100.0);
+      case 2:
+        return std::round(uniform(-6.0, 6.0));
+      case 3:
+        return (chance(0.5) ? -1.0 : 1.0) * std::pow(10.0, uniform(-30.0, 30.0));
+      case 4:
+        return (chance(0.5) ? -1.0 : 1.0) * std::pow(10.0, uniform(-310.0, 308.0));
       default: {
-        static constexpr double kSpecial[] = {0.0, -0.0, 1.0, -1.0, 0.5, -0.5, kMax, -kMax, kTiny, -kTiny,
-                                              std::numeric_limits<double>::min(), 0.1, 2.0, -2.0, kPi, kHalfPi};
+        static constexpr double kSpecial[] = {
+            0.0, -0.0, 1.0,  -1.0, 0.5,    -0.5, kMax, -kMax, kTiny, -kTiny, std::numeric_limits<double>::min(),
+            0.1, 2.0,  -2.0, kPi,  kHalfPi};
         return kSpecial[integer(0, static_cast<int>(std::size(kSpecial)) - 1)];
       }
     }
@@ -92,7 +98,8 @@ class Sampler {
   Interval interval(bool allow_unbounded) {
     const double a = number();
     switch (integer(0, allow_unbounded ? 4 : 2)) {
-      case 0: return iv(a, a);
+      case 0:
+        return iv(a, a);
       case 1: {
         double b = a;
         for (int i = integer(1, 8); i > 0; --i) b = genmod::interval_detail::next_up(b);
@@ -102,8 +109,10 @@ class Sampler {
         const double b = number();
         return iv(std::min(a, b), std::max(a, b));
       }
-      case 3: return chance(0.5) ? iv(-kInf, a) : iv(a, kInf);
-      default: return Interval::entire();
+      case 3:
+        return chance(0.5) ? iv(-kInf, a) : iv(a, kInf);
+      default:
+        return Interval::entire();
     }
   }
 
@@ -111,9 +120,12 @@ class Sampler {
   double point_in(const Interval& x) {
     const double lo = std::max(x.lo(), -kMax), hi = std::min(x.hi(), kMax);
     switch (integer(0, 3)) {
-      case 0: return lo;
-      case 1: return hi;
-      case 2: return std::clamp(number(), lo, hi);
+      case 0:
+        return lo;
+      case 1:
+        return hi;
+      case 2:
+        return std::clamp(number(), lo, hi);
       default: {
         const double t = uniform(0.0, 1.0);
         return std::clamp((1.0 - t) * lo + t * hi, lo, hi);
@@ -160,19 +172,31 @@ struct BinaryFunction {
 
 const std::vector<UnaryFunction>& unary_functions() {
   static const std::vector<UnaryFunction> functions = {
-      {"square", [](const Interval& x, std::uint8_t*) { return genmod::square(x); }, [](double v) { return v * v; }, kExact},
-      {"sqrt", [](const Interval& x, std::uint8_t* e) { return genmod::sqrt(x, e); }, [](double v) { return std::sqrt(v); }, kExact},
-      {"exp", [](const Interval& x, std::uint8_t*) { return genmod::exp(x); }, [](double v) { return std::exp(v); }, kLibmSlack},
+      {"square", [](const Interval& x, std::uint8_t*) { return genmod::square(x); }, [](double v) { return v * v; },
+       kExact},
+      {"sqrt", [](const Interval& x, std::uint8_t* e) { return genmod::sqrt(x, e); },
+       [](double v) { return std::sqrt(v); }, kExact},
+      {"exp", [](const Interval& x, std::uint8_t*) { return genmod::exp(x); }, [](double v) { return std::exp(v); },
+       kLibmSlack},
       {"log", [](const Interval& x, std::uint8_t* e) { return genmod::log(x, e); }, genmod::point::log, kLibmSlack},
-      {"sin", [](const Interval& x, std::uint8_t*) { return genmod::sin(x); }, [](double v) { return std::sin(v); }, kLibmSlack},
-      {"cos", [](const Interval& x, std::uint8_t*) { return genmod::cos(x); }, [](double v) { return std::cos(v); }, kLibmSlack},
-      {"tan", [](const Interval& x, std::uint8_t*) { return genmod::tan(x); }, [](double v) { return std::tan(v); }, kLibmSlack},
-      {"asin", [](const Interval& x, std::uint8_t* e) { return genmod::asin(x, e); }, [](double v) { return std::asin(v); }, kLibmSlack},
-      {"acos", [](const Interval& x, std::uint8_t* e) { return genmod::acos(x, e); }, [](double v) { return std::acos(v); }, kLibmSlack},
-      {"atan", [](const Interval& x, std::uint8_t*) { return genmod::atan(x); }, [](double v) { return std::atan(v); }, kLibmSlack},
-      {"abs", [](const Interval& x, std::uint8_t*) { return genmod::abs(x); }, [](double v) { return std::abs(v); }, kExact},
-      {"floor", [](const Interval& x, std::uint8_t*) { return genmod::floor(x); }, [](double v) { return std::floor(v); }, kExact},
-      {"ceil", [](const Interval& x, std::uint8_t*) { return genmod::ceil(x); }, [](double v) { return std::ceil(v); }, kExact},
+      {"sin", [](const Interval& x, std::uint8_t*) { return genmod::sin(x); }, [](double v) { return std::sin(v); },
+       kLibmSlack},
+      {"cos", [](const Interval& x, std::uint8_t*) { return genmod::cos(x); }, [](double v) { return std::cos(v); },
+       kLibmSlack},
+      {"tan", [](const Interval& x, std::uint8_t*) { return genmod::tan(x); }, [](double v) { return std::tan(v); },
+       kLibmSlack},
+      {"asin", [](const Interval& x, std::uint8_t* e) { return genmod::asin(x, e); },
+       [](double v) { return std::asin(v); }, kLibmSlack},
+      {"acos", [](const Interval& x, std::uint8_t* e) { return genmod::acos(x, e); },
+       [](double v) { return std::acos(v); }, kLibmSlack},
+      {"atan", [](const Interval& x, std::uint8_t*) { return genmod::atan(x); }, [](double v) { return std::atan(v); },
+       kLibmSlack},
+      {"abs", [](const Interval& x, std::uint8_t*) { return genmod::abs(x); }, [](double v) { return std::abs(v); },
+       kExact},
+      {"floor", [](const Interval& x, std::uint8_t*) { return genmod::floor(x); },
+       [](double v) { return std::floor(v); }, kExact},
+      {"ceil", [](const Interval& x, std::uint8_t*) { return genmod::ceil(x); }, [](double v) { return std::ceil(v); },
+       kExact},
   };
   return functions;
 }
@@ -181,9 +205,12 @@ const std::vector<BinaryFunction>& binary_functions() {
   static const std::vector<BinaryFunction> functions = {
       {"atan2", [](const Interval& y, const Interval& x, std::uint8_t*) { return genmod::atan2(y, x); },
        [](double y, double x) { return std::atan2(y, x); }, kLibmSlack},
-      {"pow", [](const Interval& x, const Interval& y, std::uint8_t* e) { return genmod::pow(x, y, e); }, genmod::point::pow, kLibmSlack},
-      {"min", [](const Interval& a, const Interval& b, std::uint8_t*) { return genmod::min(a, b); }, genmod::point::min, kExact},
-      {"max", [](const Interval& a, const Interval& b, std::uint8_t*) { return genmod::max(a, b); }, genmod::point::max, kExact},
+      {"pow", [](const Interval& x, const Interval& y, std::uint8_t* e) { return genmod::pow(x, y, e); },
+       genmod::point::pow, kLibmSlack},
+      {"min", [](const Interval& a, const Interval& b, std::uint8_t*) { return genmod::min(a, b); }, genmod::point::min,
+       kExact},
+      {"max", [](const Interval& a, const Interval& b, std::uint8_t*) { return genmod::max(a, b); }, genmod::point::max,
+       kExact},
   };
   return functions;
 }
@@ -235,7 +262,7 @@ bool contains_decimal(const Interval& x, const char* text) {
 
 // Claim 3: outward rounding. 0.1 + 0.2 != 0.3 in plain doubles, but the interval sum of
 // enclosures of 0.1 and 0.2 contains 0.3.
-TEST(SnyderClaims, OutwardRoundingOfDecimalSum) {
+TEST(IntervalSnyderClaims, OutwardRoundingOfDecimalSum) {
   volatile double a = 0.1, b = 0.2;
   ASSERT_NE(a + b, 0.3);  // what makes the claim worth testing
   for (const bool upward : {false, true}) {
@@ -246,9 +273,11 @@ TEST(SnyderClaims, OutwardRoundingOfDecimalSum) {
 }
 
 // Claim 4: cosine corner cases (the thesis' case table has its middle cases swapped).
-TEST(SnyderClaims, CosineCornerCases) {
+TEST(IntervalSnyderClaims, CosineCornerCases) {
   for (const bool upward : {false, true}) {
-    const auto cos = [upward](double lo, double hi) { return in_mode(upward, [=] { return genmod::cos(iv(lo, hi)); }); };
+    const auto cos = [upward](double lo, double hi) {
+      return in_mode(upward, [=] { return genmod::cos(iv(lo, hi)); });
+    };
     EXPECT_EQ(cos(-0.1, 0.1).hi(), 1.0);
     EXPECT_LE(cos(-0.1, 0.1).lo(), std::cos(0.1));
     EXPECT_EQ(cos(3.0, 3.3).lo(), -1.0);
@@ -263,7 +292,7 @@ TEST(SnyderClaims, CosineCornerCases) {
 }
 
 // Claim 5: square recognizes the dependency that x * x cannot.
-TEST(SnyderClaims, SquareVersusProduct) {
+TEST(IntervalSnyderClaims, SquareVersusProduct) {
   const Interval x = iv(-2.0, 2.0);
   EXPECT_EQ(genmod::square(x), iv(0.0, 4.0));
   EXPECT_EQ(x * x, iv(-4.0, 4.0));
@@ -279,7 +308,7 @@ std::vector<Interval> pieces(const genmod::IntervalPair& q) {
 }
 
 // Claim 20: extended division for interval Newton.
-TEST(SnyderClaims, ExtendedDivision) {
+TEST(IntervalSnyderClaims, ExtendedDivision) {
   using V = std::vector<Interval>;
   EXPECT_EQ(pieces(genmod::extended_divide(iv(0, 1), iv(-1, 0))), V{Interval::entire()});
   EXPECT_EQ(pieces(genmod::extended_divide(iv(1, 2), iv(0, 1))), V{iv(1, kInf)});
@@ -573,8 +602,8 @@ TEST(IntervalElementary, Isotonic) {
         const Interval fy = in_mode(upward, [&] { return f.enclose(y1, y2, nullptr); });
         if (!widened(fz, f.isotonic_ulps).contains(fy)) {
           ++failures;
-          ADD_FAILURE() << f.name << ": f(" << y1 << ", " << y2 << ") = " << fy << " not within f(" << z1 << ", "
-                        << z2 << ") = " << fz;
+          ADD_FAILURE() << f.name << ": f(" << y1 << ", " << y2 << ") = " << fy << " not within f(" << z1 << ", " << z2
+                        << ") = " << fz;
         }
       }
     }
@@ -642,10 +671,10 @@ TEST(IntervalElementary, ContainsPointValuesAndFlagsErrors) {
         PointCheck check(std::string(f.name) + text(x) + text(y), fxy, err);
         for (int k = 0; k < 8 && ok; ++k) {
           const double p = s.point_in(x);
-          const double q = (k == 0 && y.lo() <= std::ceil(y.lo()) && std::ceil(y.lo()) <= y.hi() &&
-                            std::isfinite(std::ceil(y.lo())))
-                               ? std::ceil(y.lo())  // an integer of y, where negative bases count
-                               : s.point_in(y);
+          const double q =
+              (k == 0 && y.lo() <= std::ceil(y.lo()) && std::ceil(y.lo()) <= y.hi() && std::isfinite(std::ceil(y.lo())))
+                  ? std::ceil(y.lo())  // an integer of y, where negative bases count
+                  : s.point_in(y);
           ok = check.check(f.point(p, q), at(p, q));
         }
       }

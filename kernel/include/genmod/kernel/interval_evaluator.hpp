@@ -37,6 +37,9 @@ class IntervalEvaluator {
   bool continuous() const noexcept { return continuous_; }
 
  private:
+  Interval other_op(const Clause& c, std::span<const double> k, std::uint8_t& err, bool& jump);
+  void call(const Tape& tape, std::uint32_t call);
+
   std::vector<Interval> regs_;
   std::vector<std::uint8_t> err_;
   std::vector<Interval> slots_;
@@ -44,6 +47,8 @@ class IntervalEvaluator {
   std::vector<Interval> out_;
   std::vector<std::uint8_t> out_err_;
   std::vector<std::uint8_t> choices_;
+  std::vector<Interval> call_args_;
+  const Clause* clauses_base_ = nullptr;  // the clauses being evaluated (for choices of select)
   bool continuous_ = true;
 };
 
