@@ -12,6 +12,7 @@
 // Each test prints (does not assert) how much wider than the tightest enclosure genmod's is, in
 // ulps per bound: the mean and max over point and narrow arguments, where it is meaningful.
 #include "genmod/kernel/interval.hpp"
+#include "kernel/mpfr_value.hpp"
 
 #include <gtest/gtest.h>
 #include <mpfi.h>
@@ -44,17 +45,7 @@ constexpr mpfr_prec_t kPrecision = 200;
 
 // ---- MPFR / MPFI values that free themselves -------------------------------------------------
 
-class Mpfr {
- public:
-  Mpfr() { mpfr_init2(v_, kPrecision); }
-  ~Mpfr() { mpfr_clear(v_); }
-  Mpfr(const Mpfr&) = delete;
-  Mpfr& operator=(const Mpfr&) = delete;
-  mpfr_ptr get() { return v_; }
-
- private:
-  mpfr_t v_;
-};
+using genmod::testing::Mpfr;
 
 class Mpfi {
  public:

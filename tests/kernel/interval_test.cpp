@@ -4,6 +4,7 @@
 // elementary enclosure. The elementary functions are checked against the MPFI oracle in
 // interval_mpfi_test.cpp.
 #include "genmod/kernel/interval.hpp"
+#include "kernel/mpfr_value.hpp"
 
 #include <gtest/gtest.h>
 #include <mpfr.h>
@@ -48,18 +49,7 @@ auto in_mode(bool upward, F&& f) {
   return f();
 }
 
-// An MPFR number that frees itself.
-class Mpfr {
- public:
-  explicit Mpfr(mpfr_prec_t precision) { mpfr_init2(v_, precision); }
-  ~Mpfr() { mpfr_clear(v_); }
-  Mpfr(const Mpfr&) = delete;
-  Mpfr& operator=(const Mpfr&) = delete;
-  mpfr_ptr get() { return v_; }
-
- private:
-  mpfr_t v_;
-};
+using genmod::testing::Mpfr;
 
 // ---- random inputs ---------------------------------------------------------------------
 
