@@ -44,6 +44,7 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
   const std::size_t stride = n + 1;  // value, then partials
   regs_.assign(std::size_t{tape.num_registers()} * stride, 0.0);
   slots_.assign(std::size_t{tape.num_call_slots()} * stride, 0.0);
+  scratch_.resize(stride);
   const std::span<const double> konst = tape.constants();
 
   for (const Clause& c : tape.clauses()) {
@@ -129,13 +130,7 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
       default: break;  // piecewise constant, constants, loads, call outputs
     }
     // Partials into a temporary first: `out` may alias an operand.
-    double tmp[64 + 1];
-    std::vector<double> big;
-    double* g = tmp;
-    if (stride > 65) {
-      big.resize(stride);
-      g = big.data();
-    }
+    double* g = scratch_.data();
     for (std::size_t i = 1; i < stride; ++i) {
       // A term whose operand does not depend on the input is skipped, not multiplied: its
       // coefficient may be infinite (0^y at y < 1), as the symbolic derivative skips it too.

@@ -24,6 +24,7 @@ class GradientEvaluator {
  private:
   std::vector<double> regs_;   // per register: value then num_inputs partials
   std::vector<double> slots_;  // per call slot: value then partials
+  std::vector<double> scratch_;  // one register's partials
   std::vector<double> values_, jacobian_;
   std::unordered_map<std::uint32_t, Tape> custom_partials_;  // per custom operator
 };
