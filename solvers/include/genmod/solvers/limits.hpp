@@ -1,0 +1,28 @@
+// Resource limits shared by the interval solvers, and the report of what a search used.
+// Every search stops at its limits and says which one it hit; nothing is dropped silently.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+namespace genmod {
+
+struct SearchLimits {
+  std::size_t max_boxes = 1'000'000;  // boxes taken from the work list
+  int max_depth = 200;                // subdivisions along one path
+  double time_limit = 0.0;            // seconds of wall time; 0 = none
+};
+
+enum class LimitHit : std::uint8_t { None, MaxBoxes, MaxDepth, TimeLimit };
+
+std::string_view limit_name(LimitHit hit) noexcept;
+
+struct SearchReport {
+  std::size_t boxes_processed = 0;
+  int deepest = 0;                   // largest subdivision depth reached
+  LimitHit limit = LimitHit::None;   // the first limit hit, if any
+  double seconds = 0.0;
+};
+
+}  // namespace genmod
