@@ -82,7 +82,11 @@ class Store {
     std::lock_guard lock(mutex_);
     std::vector<NodeId> key(args.begin(), args.end());
     if (auto it = arg_lists_.find(key); it != arg_lists_.end()) return it->second;
-    // The pool is a chunked array too, so spans handed out stay valid.
+    // The pool is a chunked array too, so spans handed out stay valid; a list never straddles
+    // two chunks, so it is contiguous.
+    if (args.size() > kChunkSize) throw std::length_error("genmod: too many custom operator arguments");
+    const std::size_t used = arg_pool_size_ & (kChunkSize - 1);
+    if (used + args.size() > kChunkSize) arg_pool_size_ += kChunkSize - used;
     const std::uint32_t offset = static_cast<std::uint32_t>(arg_pool_size_);
     for (NodeId a : args) {
       const std::size_t i = arg_pool_size_++;
@@ -95,8 +99,7 @@ class Store {
     return offset;
   }
   std::span<const NodeId> args(std::uint32_t offset, std::uint32_t count) const noexcept {
-    // Argument lists never straddle chunks in practice only if small; copy-free access needs
-    // them contiguous, so intern_args keeps each list inside one chunk (see below).
+    if (count == 0) return {};
     return {&arg_pool_[offset >> kChunkBits][offset & (kChunkSize - 1)], count};
   }
 
@@ -113,13 +116,6 @@ class Store {
   // Lock-free: evaluators look operators up on every call.
   const CustomOp& op(std::uint32_t id) const noexcept { return *op_ptrs_[id].load(std::memory_order_acquire); }
 
-  // Keeps each argument list within one chunk so that it is contiguous.
-  void align_arg_pool(std::size_t count) {
-    std::lock_guard lock(mutex_);
-    const std::size_t used = arg_pool_size_ & (kChunkSize - 1);
-    if (count > kChunkSize) throw std::length_error("genmod: too many custom operator arguments");
-    if (used + count > kChunkSize) arg_pool_size_ += kChunkSize - used;
-  }
 
  private:
   mutable std::mutex mutex_;
@@ -315,7 +311,6 @@ NodeId make_custom(std::uint32_t op_id, int output, std::span<const NodeId> args
     throw std::invalid_argument("genmod: custom operator '" + op.name() + "' has no output " + std::to_string(output));
   for (NodeId a : args)
     if (a >= size()) throw std::invalid_argument("genmod: custom operator argument is not a node");
-  store().align_arg_pool(args.size());
   const std::uint32_t offset = store().intern_args(args);
   return intern(Op::Custom, offset, static_cast<std::uint32_t>(args.size()), kNoNode, output, op_id, 0.0);
 }

@@ -211,5 +211,30 @@ TEST(Evaluators, CustomOperatorThroughAllThreeMethods) {
   EXPECT_THROW(apply(op, {x(0), x(1)}), std::invalid_argument);
 }
 
+
+// A custom operator with no arguments: a named constant with a rigorous enclosure.
+class GoldenRatio : public CustomOp {
+ public:
+  std::string name() const override { return "golden-ratio"; }
+  int num_args() const override { return 0; }
+  int num_outputs() const override { return 1; }
+  void eval(std::span<const double>, std::span<double> out) const override { out[0] = (1 + std::sqrt(5.0)) / 2; }
+  void inclusion(std::span<const Interval>, std::span<Interval> out, std::span<std::uint8_t>) const override {
+    out[0] = (Interval(1.0) + sqrt(Interval(5.0))) / Interval(2.0);
+  }
+  Fn derivative(std::span<const Fn>, int) const override { return Fn(0.0); }
+};
+
+TEST(Evaluators, CustomOperatorWithoutArguments) {
+  const Fn phi = genmod::apply(std::make_shared<GoldenRatio>(), std::span<const Fn>{});
+  const Fn f = phi * x(0);
+  const double golden = (1 + std::sqrt(5.0)) / 2;
+  EXPECT_DOUBLE_EQ(evaluate(f, std::vector<double>{2.0})[0], 2 * golden);
+  IntervalEvaluator iv;
+  const Interval y = iv.eval(Tape(f), {Interval(1, 2)})[0];
+  EXPECT_TRUE(y.contains(golden) && y.contains(2 * golden));
+  EXPECT_DOUBLE_EQ(evaluate(derivative(f, 0), std::vector<double>{3.0})[0], golden);
+}
+
 }  // namespace
 }  // namespace genmod
