@@ -139,7 +139,7 @@ Fn select(const Fn& cond, const Fn& then_fn, const Fn& else_fn) {
   return Fn(std::move(out));
 }
 
-Fn apply(const std::shared_ptr<const CustomOp>& op, std::span<const Fn> args) {
+Fn apply_custom(const std::shared_ptr<const CustomOp>& op, std::span<const Fn> args) {
   const std::uint32_t id = dag::register_custom(op);
   std::vector<NodeId> arg_nodes;
   for (const Fn& a : args) arg_nodes.push_back(scalar(a, "a custom operator argument"));
@@ -148,8 +148,8 @@ Fn apply(const std::shared_ptr<const CustomOp>& op, std::span<const Fn> args) {
   return Fn(std::move(out));
 }
 
-Fn apply(const std::shared_ptr<const CustomOp>& op, std::initializer_list<Fn> args) {
-  return apply(op, std::span<const Fn>(args.begin(), args.size()));
+Fn apply_custom(const std::shared_ptr<const CustomOp>& op, std::initializer_list<Fn> args) {
+  return apply_custom(op, std::span<const Fn>(args.begin(), args.size()));
 }
 
 }  // namespace genmod

@@ -174,7 +174,7 @@ class UnitCircle : public CustomOp {
 
 TEST(Evaluators, CustomOperatorThroughAllThreeMethods) {
   auto op = std::make_shared<UnitCircle>();
-  const Fn c = apply(op, {square(x(0))});  // composed with t = u^2
+  const Fn c = apply_custom(op, {square(x(0))});  // composed with t = u^2
   ASSERT_EQ(c.dim(), 2u);
   const Fn r2 = square(c[0]) + square(c[1]);
   const Tape t(cat({c, r2}));
@@ -208,7 +208,7 @@ TEST(Evaluators, CustomOperatorThroughAllThreeMethods) {
   expect_batch_equals_scalar(t, {in}, in.size());
   // Composition substitutes inside the operator's arguments.
   EXPECT_NEAR(evaluate(compose(c, 0, Fn(0.5)), std::vector<double>{})[0], std::cos(2 * M_PI * 0.25), 1e-15);
-  EXPECT_THROW(apply(op, {x(0), x(1)}), std::invalid_argument);
+  EXPECT_THROW(apply_custom(op, {x(0), x(1)}), std::invalid_argument);
 }
 
 
@@ -226,7 +226,7 @@ class GoldenRatio : public CustomOp {
 };
 
 TEST(Evaluators, CustomOperatorWithoutArguments) {
-  const Fn phi = genmod::apply(std::make_shared<GoldenRatio>(), std::span<const Fn>{});
+  const Fn phi = apply_custom(std::make_shared<GoldenRatio>(), std::span<const Fn>{});
   const Fn f = phi * x(0);
   const double golden = (1 + std::sqrt(5.0)) / 2;
   EXPECT_DOUBLE_EQ(evaluate(f, std::vector<double>{2.0})[0], 2 * golden);

@@ -4,7 +4,10 @@
 // user) adds operators without touching the kernel.
 //
 //   auto op = std::make_shared<MyCurve>(...);
-//   Fn c = apply(op, {x(0)});      // an Fn with op->num_outputs() components
+//   Fn c = apply_custom(op, {x(0)});   // an Fn with op->num_outputs() components
+//
+// (Not named `apply`: with a std::shared_ptr argument, argument-dependent lookup would also
+// find std::apply.)
 //
 // Thread safety: one operator object may be called from several threads at once, so the
 // methods must be const-correct and keep no mutable state (or guard it).
@@ -38,7 +41,7 @@ class CustomOp {
 };
 
 // Applies `op` to scalar argument functions; the result has op->num_outputs() components.
-Fn apply(const std::shared_ptr<const CustomOp>& op, std::span<const Fn> args);
-Fn apply(const std::shared_ptr<const CustomOp>& op, std::initializer_list<Fn> args);
+Fn apply_custom(const std::shared_ptr<const CustomOp>& op, std::span<const Fn> args);
+Fn apply_custom(const std::shared_ptr<const CustomOp>& op, std::initializer_list<Fn> args);
 
 }  // namespace genmod
