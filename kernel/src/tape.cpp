@@ -28,91 +28,149 @@ namespace {
 
 constexpr std::uint32_t kUnused = 0xffffffffu;
 
-// The SSA operands of a clause that are register values (not immediates or slots).
-template <class F>
-void for_each_operand(const Clause& cl, std::span<const std::uint32_t> call_args, std::span<const CallSite> calls,
-                      F&& f) {
-  if (cl.op == Op::Call) {
-    const CallSite& cs = calls[cl.a];
-    for (std::uint32_t k = 0; k < cs.num_args; ++k) f(call_args[cs.first_arg + k]);
-    return;
-  }
-  if (cl.op == Op::CallOut) {
-    f(cl.b);  // ordering dependency on the call, not a register read
-    return;
-  }
-  const int n = arity(cl.op);
-  if (n >= 1) f(cl.a);
-  if (n >= 2) f(cl.b);
-  if (n >= 3) f(cl.c);
-}
+// Rebuilds a tape from SSA clauses in one backward pass: drops values nothing needs, forwards
+// min / max / select clauses whose choice is one-sided to the chosen operand, allocates
+// registers (linear scan, backward: a value's register is taken at its last use and released
+// at its definition), and renumbers the SSA form. `choices` may be empty (nothing collapses):
+// that is how a freshly compiled tape gets its registers. Sets *changed if a clause was
+// dropped or collapsed.
+class Rebuilder {
+ public:
+  Rebuilder(const Tape::Data& src, std::span<const std::uint8_t> choices) : src_(src), choices_(choices) {}
 
-// Linear-scan register allocation over the SSA clauses (no reordering).
-void allocate_registers(Tape::Data& d) {
-  const std::size_t n = d.ssa.size();
-  std::vector<std::uint32_t> last_use(n, kUnused);
-  auto note_use = [&](std::uint32_t v, std::uint32_t at) {
-    if (last_use[v] == kUnused || last_use[v] < at) last_use[v] = at;
-  };
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const Clause& cl = d.ssa[i];
-    if (cl.op == Op::CallOut) {
-      note_use(cl.b, i);
-      continue;
-    }
-    for_each_operand(cl, d.ssa_call_args, d.calls, [&](std::uint32_t v) { note_use(v, i); });
-  }
-  for (std::uint32_t v : d.ssa_outputs) last_use[v] = static_cast<std::uint32_t>(n);  // live to the end
-
-  std::vector<std::uint32_t> reg_of(n, kUnused);
-  std::vector<std::uint32_t> free_list;
-  std::uint32_t next = 0;
-  d.reg.resize(n);
-  d.reg_call_args.assign(d.ssa_call_args.size(), 0);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const Clause& s = d.ssa[i];
-    Clause r = s;
-    const int ar = arity(s.op);
-    if (ar >= 1) r.a = reg_of[s.a];
-    if (ar >= 2 && s.op < Op::AddImm) r.b = reg_of[s.b];
-    if (ar >= 3) r.c = reg_of[s.c];
-    if (s.op == Op::Call) {
-      const CallSite& cs = d.calls[s.a];
-      for (std::uint32_t k = 0; k < cs.num_args; ++k)
-        d.reg_call_args[cs.first_arg + k] = reg_of[d.ssa_call_args[cs.first_arg + k]];
-    }
-    // Free operands whose last use is here (the result may reuse one: evaluators read all
-    // operands of a clause before writing its result).
-    if (s.op != Op::CallOut) {
-      for_each_operand(s, d.ssa_call_args, d.calls, [&](std::uint32_t v) {
-        if (last_use[v] == i && reg_of[v] != kUnused) {
-          free_list.push_back(reg_of[v]);
-          last_use[v] = kUnused - 1;  // freed once even if used twice by this clause
-        }
-      });
-    }
-    if (s.op == Op::Call) {
-      r.out = 0;  // writes call slots, not a register
-      reg_of[i] = kUnused;
-    } else {
-      std::uint32_t reg;
-      if (!free_list.empty()) {
-        reg = free_list.back();
-        free_list.pop_back();
-      } else {
-        reg = next++;
+  std::shared_ptr<Tape::Data> run(bool* changed) {
+    const std::size_t n = src_.ssa.size();
+    resolve_aliases();
+    needed_.assign(n, 0);
+    reg_of_.assign(n, kUnused);
+    auto out = std::make_shared<Tape::Data>();
+    out->constants = src_.constants;
+    out->inputs = src_.inputs;
+    out->num_slots = src_.num_slots;
+    // Outputs are live to the end: they take their registers first.
+    for (std::uint32_t v : src_.ssa_outputs) use(resolved_[v]);
+    std::vector<Clause> rev_reg, rev_ssa;  // emitted clauses, last first
+    std::vector<std::uint32_t> rev_call_args;
+    bool any_dropped = false;
+    for (std::size_t i = n; i-- > 0;) {
+      if (!needed_[i]) {
+        any_dropped = true;
+        continue;
       }
-      reg_of[i] = reg;
-      r.out = reg;
-      if (last_use[i] == kUnused) free_list.push_back(reg);  // dead value
+      Clause ssa = src_.ssa[i];
+      Clause reg = ssa;
+      if (collapses_to_immediate(i)) {
+        // min/max with a constant, where the constant wins over the whole box.
+        any_dropped = true;
+        ssa = reg = Clause{Op::Const, {}, 0, ssa.b, 0, 0};
+      }
+      // The result's register is free before this definition (walking backward).
+      reg.out = reg_of_[i];
+      if (reg.op != Op::Call) free_.push_back(reg_of_[i]);
+      switch (reg.op) {
+        case Op::Call: {
+          const CallSite& cs = src_.calls[ssa.a];
+          for (std::uint32_t k = 0; k < cs.num_args; ++k) use(resolved_[src_.ssa_call_args[cs.first_arg + k]]);
+          reg.out = 0;
+          break;
+        }
+        case Op::CallOut: needed_[ssa.b] = 1; break;  // keeps its call (an ordering dependency)
+        default: {
+          const int ar = arity(ssa.op);
+          const bool imm = ssa.op >= Op::AddImm && ssa.op <= Op::MaxImm;
+          if (ar >= 1) reg.a = use(ssa.a = resolved_[ssa.a]);
+          if (ar >= 2 && !imm) reg.b = use(ssa.b = resolved_[ssa.b]);
+          if (ar >= 3) reg.c = use(ssa.c = resolved_[ssa.c]);
+        }
+      }
+      ssa.out = static_cast<std::uint32_t>(i);  // old id for now; renumbered below
+      rev_reg.push_back(reg);
+      rev_ssa.push_back(ssa);
     }
-    d.reg[i] = r;
+    if (changed) *changed = any_dropped;
+
+    // Forward order and new SSA numbering.
+    const std::size_t m = rev_ssa.size();
+    std::vector<std::uint32_t> new_id(n, kUnused);
+    for (std::size_t k = 0; k < m; ++k) new_id[rev_ssa[m - 1 - k].out] = static_cast<std::uint32_t>(k);
+    out->ssa.resize(m);
+    out->reg.resize(m);
+    for (std::size_t k = 0; k < m; ++k) {
+      Clause ssa = rev_ssa[m - 1 - k];
+      const int ar = arity(ssa.op);
+      const bool imm = ssa.op >= Op::AddImm && ssa.op <= Op::MaxImm;
+      if (ar >= 1) ssa.a = new_id[ssa.a];
+      if (ar >= 2 && !imm) ssa.b = new_id[ssa.b];
+      if (ar >= 3) ssa.c = new_id[ssa.c];
+      if (ssa.op == Op::CallOut) ssa.b = new_id[ssa.b];
+      if (ssa.op == Op::Call) {
+        CallSite cs = src_.calls[ssa.a];
+        const std::uint32_t first = static_cast<std::uint32_t>(out->ssa_call_args.size());
+        for (std::uint32_t j = 0; j < cs.num_args; ++j) {
+          const std::uint32_t v = resolved_[src_.ssa_call_args[cs.first_arg + j]];
+          out->ssa_call_args.push_back(new_id[v]);
+          out->reg_call_args.push_back(reg_of_[v]);
+        }
+        cs.first_arg = first;
+        out->calls.push_back(cs);
+        ssa.a = static_cast<std::uint32_t>(out->calls.size() - 1);
+      }
+      ssa.out = static_cast<std::uint32_t>(k);
+      Clause reg = rev_reg[m - 1 - k];
+      if (reg.op == Op::Call) reg.a = ssa.a;
+      out->ssa[k] = ssa;
+      out->reg[k] = reg;
+      if (has_choice(ssa.op)) out->has_choices = true;
+    }
+    for (std::uint32_t v : src_.ssa_outputs) {
+      out->ssa_outputs.push_back(new_id[resolved_[v]]);
+      out->reg_outputs.push_back(reg_of_[resolved_[v]]);
+    }
+    out->num_registers = std::max<std::uint32_t>(next_reg_, 1);
+    return out;
   }
-  d.reg_outputs.clear();
-  for (std::uint32_t v : d.ssa_outputs) d.reg_outputs.push_back(reg_of[v]);
-  d.num_registers = std::max<std::uint32_t>(next, 1);
-  d.has_choices = std::any_of(d.ssa.begin(), d.ssa.end(), [](const Clause& c) { return has_choice(c.op); });
-}
+
+ private:
+  // resolved_[v]: the value v stands for after collapsing one-sided choices (chains followed).
+  void resolve_aliases() {
+    const std::size_t n = src_.ssa.size();
+    resolved_.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      resolved_[i] = i;
+      if (choices_.empty()) continue;
+      const Clause& c = src_.ssa[i];
+      if (!has_choice(c.op) || choices_[i] == kChoiceBoth) continue;
+      if (c.op == Op::Select) resolved_[i] = resolved_[choices_[i] == kChoiceFirst ? c.b : c.c];
+      else if (choices_[i] == kChoiceFirst) resolved_[i] = resolved_[c.a];
+      else if (c.op == Op::Min || c.op == Op::Max) resolved_[i] = resolved_[c.b];
+      // MinImm / MaxImm choosing the immediate stay themselves (emitted as a Const).
+    }
+  }
+  bool collapses_to_immediate(std::size_t i) const {
+    const Clause& c = src_.ssa[i];
+    return !choices_.empty() && (c.op == Op::MinImm || c.op == Op::MaxImm) && choices_[i] == kChoiceSecond;
+  }
+  // A use of value v (walking backward): v is needed and holds a register from here back to
+  // its definition.
+  std::uint32_t use(std::uint32_t v) {
+    needed_[v] = 1;
+    if (reg_of_[v] == kUnused) {
+      if (!free_.empty()) {
+        reg_of_[v] = free_.back();
+        free_.pop_back();
+      } else {
+        reg_of_[v] = next_reg_++;
+      }
+    }
+    return reg_of_[v];
+  }
+
+  const Tape::Data& src_;
+  std::span<const std::uint8_t> choices_;
+  std::vector<std::uint32_t> resolved_, reg_of_, free_;
+  std::vector<std::uint8_t> needed_;
+  std::uint32_t next_reg_ = 0;
+};
 
 // DAG -> SSA clauses.
 class Compiler {
@@ -253,8 +311,7 @@ std::shared_ptr<Tape::Data> compile(const Fn& f, std::span<const int> inputs) {
   }
   d->inputs.assign(inputs.begin(), inputs.end());
   Compiler(*d, inputs).compile(f);
-  allocate_registers(*d);
-  return d;
+  return Rebuilder(*d, {}).run(nullptr);
 }
 
 }  // namespace
@@ -275,75 +332,13 @@ bool Tape::has_choices() const noexcept { return data_->has_choices; }
 
 Tape Tape::simplify(std::span<const std::uint8_t> choices) const {
   const Data& d = *data_;
-  const std::size_t n = d.ssa.size();
-  if (choices.size() != n)
+  if (choices.size() != d.ssa.size())
     throw std::invalid_argument("genmod: Tape::simplify: " + std::to_string(choices.size()) + " choices for " +
-                                std::to_string(n) + " clauses");
+                                std::to_string(d.ssa.size()) + " clauses");
   if (!d.has_choices) return *this;
-
-  // Backward pass: which values are needed, and which clauses collapse to one operand.
-  std::vector<std::uint8_t> live(n, 0);
-  for (std::uint32_t v : d.ssa_outputs) live[v] = 1;
-  bool removed = false;
-  for (std::size_t i = n; i-- > 0;) {
-    if (!live[i]) {
-      removed = true;
-      continue;
-    }
-    const Clause& cl = d.ssa[i];
-    const std::uint8_t ch = has_choice(cl.op) ? choices[i] : std::uint8_t{kChoiceBoth};
-    if (ch != kChoiceBoth) {
-      removed = true;
-      if (cl.op == Op::Select) live[ch == kChoiceFirst ? cl.b : cl.c] = 1;
-      else if (ch == kChoiceFirst || cl.op == Op::Min || cl.op == Op::Max) live[ch == kChoiceFirst ? cl.a : cl.b] = 1;
-      // MinImm/MaxImm choosing the immediate needs no operand.
-      continue;
-    }
-    for_each_operand(cl, d.ssa_call_args, d.calls, [&](std::uint32_t v) { live[v] = 1; });
-  }
-  if (!removed) return *this;
-
-  // Forward pass: emit the live clauses, forwarding collapsed ones to their chosen operand.
-  auto out = std::make_shared<Data>();
-  out->constants = d.constants;
-  out->inputs = d.inputs;
-  std::vector<std::uint32_t> remap(n, kUnused);
-  auto push = [&](Clause c) {
-    c.out = static_cast<std::uint32_t>(out->ssa.size());
-    out->ssa.push_back(c);
-    return c.out;
-  };
-  for (std::uint32_t i = 0; i < n; ++i) {
-    if (!live[i]) continue;
-    Clause cl = d.ssa[i];
-    const std::uint8_t ch = has_choice(cl.op) ? choices[i] : std::uint8_t{kChoiceBoth};
-    if (ch != kChoiceBoth) {
-      if (cl.op == Op::Select) remap[i] = remap[ch == kChoiceFirst ? cl.b : cl.c];
-      else if (ch == kChoiceFirst) remap[i] = remap[cl.a];
-      else if (cl.op == Op::Min || cl.op == Op::Max) remap[i] = remap[cl.b];
-      else remap[i] = push({Op::Const, {}, 0, cl.b, 0, 0});  // the immediate itself
-      continue;
-    }
-    if (cl.op == Op::Call) {
-      CallSite cs = d.calls[cl.a];
-      const std::uint32_t first = static_cast<std::uint32_t>(out->ssa_call_args.size());
-      for (std::uint32_t k = 0; k < cs.num_args; ++k) out->ssa_call_args.push_back(remap[d.ssa_call_args[cs.first_arg + k]]);
-      cs.first_arg = first;
-      out->calls.push_back(cs);
-      out->num_slots = d.num_slots;  // slot numbering is kept
-      cl.a = static_cast<std::uint32_t>(out->calls.size() - 1);
-    } else if (cl.op == Op::CallOut) {
-      cl.b = remap[cl.b];
-    } else {
-      const int ar = arity(cl.op);
-      if (ar >= 1) cl.a = remap[cl.a];
-      if (ar >= 2 && cl.op < Op::AddImm) cl.b = remap[cl.b];
-      if (ar >= 3) cl.c = remap[cl.c];
-    }
-    remap[i] = push(cl);
-  }
-  for (std::uint32_t v : d.ssa_outputs) out->ssa_outputs.push_back(remap[v]);
-  allocate_registers(*out);
+  bool changed = false;
+  auto out = Rebuilder(d, choices).run(&changed);
+  if (!changed) return *this;
   return Tape(std::shared_ptr<const Data>(std::move(out)));
 }
 
