@@ -19,19 +19,24 @@ InclusionFunction::InclusionFunction(const Fn& f) : InclusionFunction(f, f.input
 InclusionFunction::InclusionFunction(const Fn& f, std::span<const int> inputs)
     : f_(f, inputs), jacobian_(inputs.empty() ? Fn(0.0) : jacobian(f, inputs), inputs) {}
 
-std::vector<Interval> InclusionFunction::eval(std::span<const Interval> box, unsigned forms) {
+std::vector<Interval> InclusionFunction::eval(std::span<const Interval> box, unsigned forms,
+                                              std::vector<Interval>* jacobian) {
   const std::size_t n = box.size(), m = f_.num_outputs();
+  if (jacobian) jacobian->clear();
   const auto natural = ev_.eval(f_, box);
   std::vector<Interval> result(natural.begin(), natural.end());
+  errors_.assign(ev_.errors().begin(), ev_.errors().end());
   const bool continuous = ev_.continuous();
   const bool bounded = std::all_of(box.begin(), box.end(), [](const Interval& x) { return x.is_bounded(); });
-  if (!(forms & (kMeanValueForm | kMonotonicityForm)) || !continuous || n == 0 || !bounded) return result;
+  const bool want_jacobian = jacobian || (forms & (kMeanValueForm | kMonotonicityForm));
+  if (!want_jacobian || !continuous || n == 0 || !bounded) return result;
 
   // Jacobian enclosure over the box; the forms are valid only if it has no possible error.
   const auto jac_span = ev_.eval(jacobian_, box);
   const std::vector<Interval> jac(jac_span.begin(), jac_span.end());
   if (std::any_of(ev_.errors().begin(), ev_.errors().end(), [](std::uint8_t e) { return e != kNoError; }))
     return result;
+  if (jacobian) *jacobian = jac;
 
   if (forms & kMeanValueForm) {
     std::vector<Interval> center(n);

@@ -31,8 +31,14 @@ class InclusionFunction {
 
   // Encloses each component of f over `box`, intersecting the chosen forms (the natural
   // extension is always computed). Forms that do not apply (discontinuity, possible error,
-  // unbounded box) are skipped.
-  std::vector<Interval> eval(std::span<const Interval> box, unsigned forms = kAllForms);
+  // unbounded box) are skipped. If `jacobian` is given it receives the enclosure of the
+  // Jacobian over the box (component j * num_inputs + i = d f_j / d input_i) when that
+  // enclosure is valid there (f continuous, no possible error, bounded box), and is left
+  // empty otherwise.
+  std::vector<Interval> eval(std::span<const Interval> box, unsigned forms = kAllForms,
+                             std::vector<Interval>* jacobian = nullptr);
+  // ErrorBits of each component from the last eval().
+  std::span<const std::uint8_t> errors() const noexcept { return errors_; }
 
   const Tape& tape() const noexcept { return f_; }
   // Outputs j * num_inputs + i = d f_j / d input_i.
@@ -41,6 +47,7 @@ class InclusionFunction {
  private:
   Tape f_, jacobian_;
   IntervalEvaluator ev_;
+  std::vector<std::uint8_t> errors_;
 };
 
 }  // namespace genmod
