@@ -92,9 +92,11 @@ Interval divide(const Interval& a, const Interval& b, std::uint8_t* err) noexcep
 
 IntervalPair extended_divide(const Interval& a, const Interval& b) noexcept {
   const Interval none = Interval::empty();
-  if (a.is_empty() || b.is_empty() || (b.lo() == 0.0 && b.hi() == 0.0)) return {none, none};
-  // Hansen's extended quotient {q : x = q y, x in a, y in b}: 0 in both means any q works.
+  if (a.is_empty() || b.is_empty()) return {none, none};
+  // Hansen's extended quotient {q : x = q y, x in a, y in b}: 0 in both means any q works
+  // (also for b = [0,0]); b = [0,0] with 0 outside a admits no q.
   if (a.contains_zero() && b.contains_zero()) return {Interval::entire(), none};
+  if (b.lo() == 0.0 && b.hi() == 0.0) return {none, none};
   if (!(b.lo() < 0.0 && b.hi() > 0.0)) return {divide(a, b), none};
   // b strictly contains 0 in its interior and a does not contain 0: two unbounded pieces.
   RoundingScope up;

@@ -324,6 +324,7 @@ std::span<const std::uint32_t> Tape::output_registers() const noexcept { return 
 std::span<const std::uint32_t> Tape::call_arg_registers() const noexcept { return data_->reg_call_args; }
 std::uint32_t Tape::num_registers() const noexcept { return data_->num_registers; }
 std::span<const Clause> Tape::ssa() const noexcept { return data_->ssa; }
+std::span<const std::uint32_t> Tape::output_values() const noexcept { return data_->ssa_outputs; }
 std::span<const double> Tape::constants() const noexcept { return *data_->constants; }
 std::span<const int> Tape::inputs() const noexcept { return data_->inputs; }
 std::span<const CallSite> Tape::calls() const noexcept { return data_->calls; }

@@ -304,6 +304,8 @@ TEST(IntervalSnyderClaims, ExtendedDivision) {
   EXPECT_EQ(pieces(genmod::extended_divide(iv(1, 2), iv(0, 1))), V{iv(1, kInf)});
   EXPECT_EQ(pieces(genmod::extended_divide(iv(-2, -1), iv(-1, 1))), (V{iv(-kInf, -1), iv(1, kInf)}));
   EXPECT_EQ(pieces(genmod::extended_divide(iv(1, 2), iv(0, 0))), V{});
+  // 0 = q * 0 for every q.
+  EXPECT_EQ(pieces(genmod::extended_divide(iv(-1, 1), iv(0, 0))), V{Interval::entire()});
   // The header's own example.
   EXPECT_EQ(pieces(genmod::extended_divide(iv(1, 2), iv(-1, 1))), (V{iv(-kInf, -1), iv(1, kInf)}));
 }

@@ -138,8 +138,9 @@ inline Interval& operator+=(Interval& a, const Interval& b) noexcept { return a 
 inline Interval& operator-=(Interval& a, const Interval& b) noexcept { return a = a - b; }
 inline Interval& operator*=(Interval& a, const Interval& b) noexcept { return a = a * b; }
 
-// Extended division (for interval Newton): a / b as up to two disjoint pieces. `second` is
-// empty when the quotient is one interval. [1,2]/[-1,1] = (-inf,-1] and [1,inf).
+// Extended division (for interval Newton): the set {q : x = q y for some x in a, y in b}
+// as up to two disjoint pieces; `second` is empty when it is one interval.
+// [1,2]/[-1,1] = (-inf,-1] and [1,inf); [-1,1]/[0,0] = entire; [1,2]/[0,0] = empty.
 struct IntervalPair {
   Interval first, second;
 };

@@ -61,8 +61,9 @@ class Tape {
   std::span<const std::uint32_t> output_registers() const noexcept;
   std::span<const std::uint32_t> call_arg_registers() const noexcept;
   std::uint32_t num_registers() const noexcept;
-  // SSA form (same clause order).
+  // SSA form (same clause order); output j is the value of SSA clause output_values()[j].
   std::span<const Clause> ssa() const noexcept;
+  std::span<const std::uint32_t> output_values() const noexcept;
 
   std::span<const double> constants() const noexcept;
   std::span<const int> inputs() const noexcept;

@@ -1,0 +1,57 @@
+// Forward-backward (HC4-revise) contraction of a box against a ConstraintSystem
+// (Benhamou et al. 1999; IBEX's CtcHC4, research/anchors.md section 4).
+//
+// For each atom h rel 0 the tape of h is evaluated forward over the box, one interval per SSA
+// clause; the root interval is intersected with the set the relation allows ([0,0] for ==,
+// (-inf,0] for < and <=, [0,inf) for > and >=), and the result is projected back through every
+// clause onto its operands (inverse of + - * / neg square sqrt exp log abs min max and their
+// immediate forms; other operations leave their operands unchanged). The projections onto the
+// loads shrink the unknowns' sides. && contracts with each side in turn, || takes the hull of
+// the contractions of both sides, ! is pushed into the relations.
+//
+// Soundness: every projection is computed with outward-rounded interval operations, so a
+// point of the box that satisfies the constraint is never removed. Points where h fails (sqrt
+// of a negative, division by zero) are not solutions (the constraint is NaN there) and may be
+// removed. Parameters (inputs after the unknowns) are read but never narrowed.
+//
+//   ConstraintSystem sys(eq(square(x(0)) + square(x(1)), 1.0), unknowns);
+//   Hc4Contractor hc4(sys);
+//   Box b = {Interval(0.9, 2.0), Interval(-0.1, 0.1)};
+//   bool maybe = hc4.contract(b);             // b shrinks to about [0.99, 1] x [-0.1, 0.1]
+#pragma once
+
+#include "genmod/solvers/box.hpp"
+#include "genmod/solvers/constraint_system.hpp"
+
+#include <span>
+#include <vector>
+
+namespace genmod {
+
+class Hc4Contractor {
+ public:
+  // Keeps a reference to `system`, which must outlive the contractor. Cheap to copy (one copy
+  // per thread: the scratch memory is per object).
+  explicit Hc4Contractor(const ConstraintSystem& system);
+
+  // Contracts `box` (unknowns then parameters) in place. Returns false when the box holds no
+  // solution (then `box` is unspecified). `atom_values` (optional, one per atom) skips atoms
+  // already known true and rejects with atoms known false, from a prior evaluation.
+  bool contract(std::span<Interval> box, std::span<const Truth> atom_values = {});
+
+  // Contracts against one atom with an explicit relation (h rel 0). False when no point fits.
+  bool contract_atom(std::size_t atom, Relation rel, std::span<Interval> box);
+
+  // Whether the forward-backward pass supports atom i (every op of its tape has a sound
+  // forward rule; otherwise the atom is skipped, which is always sound).
+  bool supports(std::size_t atom) const { return supported_.at(atom) != 0; }
+
+ private:
+  bool contract_node(std::uint32_t node, bool negated, std::span<Interval> box, std::span<const Truth> values);
+
+  const ConstraintSystem* sys_;
+  std::vector<std::uint8_t> supported_;
+  std::vector<Interval> v_;  // one interval per SSA clause
+};
+
+}  // namespace genmod
