@@ -2,4 +2,5 @@
 #pragma once
 
 #include "genmod/kernel/kernel.hpp"
+#include "genmod/operators/operators.hpp"
 #include "genmod/tessellate/tessellate.hpp"

@@ -1,0 +1,226 @@
+#include "bspline_op.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace genmod::detail {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+[[noreturn]] void bad(const std::string& kind, const std::string& what) {
+  throw std::invalid_argument("genmod: " + kind + ": " + what);
+}
+
+}  // namespace
+
+BSplineOp::BSplineOp(int dim, int degree, std::vector<double> knots, std::vector<double> points,
+                     std::vector<double> weights, std::string kind)
+    : dim_(dim), degree_(degree), knots_(std::move(knots)), points_(std::move(points)),
+      weights_(std::move(weights)), kind_(std::move(kind)) {
+  if (dim < 1 || dim > kMaxDim)
+    bad(kind_, "dimension " + std::to_string(dim) + " is outside [1, " + std::to_string(kMaxDim) + "]");
+  if (degree < 0 || degree > kMaxDegree)
+    bad(kind_, "degree " + std::to_string(degree) + " is outside [0, " + std::to_string(kMaxDegree) + "]");
+  if (points_.size() % static_cast<std::size_t>(dim) != 0)
+    bad(kind_, "the coordinates are not a whole number of points");
+  n_ = static_cast<int>(points_.size() / static_cast<std::size_t>(dim));
+  if (n_ < degree + 1)
+    bad(kind_, "degree " + std::to_string(degree) + " needs at least " + std::to_string(degree + 1) +
+                   " control points, got " + std::to_string(n_));
+  if (knots_.size() != static_cast<std::size_t>(n_ + degree + 1))
+    bad(kind_, std::to_string(n_) + " control points of degree " + std::to_string(degree) + " need " +
+                   std::to_string(n_ + degree + 1) + " knots, got " + std::to_string(knots_.size()));
+  for (std::size_t i = 0; i < knots_.size(); ++i) {
+    if (!std::isfinite(knots_[i])) bad(kind_, "knot " + std::to_string(i) + " is not finite");
+    if (i > 0 && knots_[i] < knots_[i - 1])
+      bad(kind_, "the knot vector is not nondecreasing at knot " + std::to_string(i) + " (" +
+                     std::to_string(knots_[i]) + " < " + std::to_string(knots_[i - 1]) + ")");
+  }
+  if (!(lo() < hi())) bad(kind_, "the domain [u_p, u_n] of the knot vector is empty");
+  for (std::size_t i = 0; i < points_.size(); ++i)
+    if (!std::isfinite(points_[i])) bad(kind_, "control point " + std::to_string(i / static_cast<std::size_t>(dim)) + " is not finite");
+  if (!weights_.empty() && weights_.size() != static_cast<std::size_t>(n_))
+    bad(kind_, std::to_string(n_) + " control points need " + std::to_string(n_) + " weights, got " +
+                   std::to_string(weights_.size()));
+  for (std::size_t i = 0; i < weights_.size(); ++i)
+    if (!(weights_[i] > 0.0) || !std::isfinite(weights_[i]))
+      bad(kind_, "weight " + std::to_string(i) + " is not a positive number");
+
+  const std::size_t hd = static_cast<std::size_t>(hdim()), d = static_cast<std::size_t>(dim_);
+  hpoints_.resize(static_cast<std::size_t>(n_) * hd);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(n_); ++i) {
+    const double w = rational() ? weights_[i] : 1.0;
+    for (std::size_t c = 0; c < d; ++c) hpoints_[i * hd + c] = w * points_[i * d + c];
+    if (rational()) hpoints_[i * hd + d] = w;
+  }
+
+  // Rounding allowance per span: de Boor and the blossoms are convex combinations, each
+  // level off by a few ulps of the largest control point; a rational curve divides by a
+  // weight no smaller than the smallest one (see the file comment of curve.hpp).
+  pad_.assign(static_cast<std::size_t>(n_), 0.0);
+  span_lo_.assign(static_cast<std::size_t>(n_) * d, kNaN);
+  span_hi_.assign(static_cast<std::size_t>(n_) * d, kNaN);
+  for (int k = degree_; k < n_; ++k) {
+    const std::size_t ku = static_cast<std::size_t>(k);
+    double m = 0.0, wmin = 1.0, wmax = 1.0;
+    if (rational()) wmin = std::numeric_limits<double>::infinity(), wmax = 0.0;
+    for (int i = k - degree_; i <= k; ++i) {
+      const std::size_t iu = static_cast<std::size_t>(i);
+      for (std::size_t c = 0; c < d; ++c) m = std::max(m, std::abs(points_[iu * d + c]));
+      if (rational()) wmin = std::min(wmin, weights_[iu]), wmax = std::max(wmax, weights_[iu]);
+    }
+    pad_[ku] = 16.0 * (degree_ + 2) * kEps * m * (wmax / wmin) + std::numeric_limits<double>::denorm_min();
+    if (knots_[ku] < knots_[ku + 1]) {
+      double* lo_k = &span_lo_[ku * d];
+      double* hi_k = &span_hi_[ku * d];
+      std::fill_n(lo_k, d, std::numeric_limits<double>::infinity());
+      std::fill_n(hi_k, d, -std::numeric_limits<double>::infinity());
+      enclose_piece(k, knots_[ku], knots_[ku + 1], lo_k, hi_k);
+    }
+  }
+}
+
+int BSplineOp::span(double t) const noexcept {
+  const auto first = knots_.begin() + degree_;
+  const auto last = knots_.begin() + n_ + 1;
+  int k = static_cast<int>(std::upper_bound(first, last, t) - knots_.begin()) - 1;
+  k = std::clamp(k, degree_, n_ - 1);
+  // t = u_n belongs to the last nonempty span.
+  while (k > degree_ && !(knots_[static_cast<std::size_t>(k)] < knots_[static_cast<std::size_t>(k) + 1])) --k;
+  return k;
+}
+
+void BSplineOp::de_boor(int k, const double* params, double* out) const {
+  const int p = degree_, hd = hdim();
+  double d[kMaxDegree + 1][kMaxDim + 1];
+  for (int j = 0; j <= p; ++j)
+    for (int c = 0; c < hd; ++c) d[j][c] = hpoints_[static_cast<std::size_t>((j + k - p) * hd + c)];
+  for (int r = 1; r <= p; ++r) {
+    const double x = params[r - 1];
+    for (int j = p; j >= r; --j) {
+      const double a = knots_[static_cast<std::size_t>(j + k - p)];
+      const double b = knots_[static_cast<std::size_t>(j + 1 + k - r)];
+      const double alpha = (x - a) / (b - a);  // b > a: the span [u_k, u_k+1] lies in [a, b]
+      for (int c = 0; c < hd; ++c) d[j][c] = (1.0 - alpha) * d[j - 1][c] + alpha * d[j][c];
+    }
+  }
+  for (int c = 0; c < hd; ++c) out[c] = d[p][c];
+}
+
+void BSplineOp::eval(std::span<const double> args, std::span<double> out) const {
+  const double t = args[0];
+  if (!(t >= lo() && t <= hi())) {  // NaN, or outside the domain
+    std::fill(out.begin(), out.end(), kNaN);
+    return;
+  }
+  double params[kMaxDegree];
+  std::fill_n(params, degree_, t);
+  double h[kMaxDim + 1];
+  de_boor(span(t), params, h);
+  for (int c = 0; c < dim_; ++c) out[static_cast<std::size_t>(c)] = rational() ? h[c] / h[dim_] : h[c];
+}
+
+void BSplineOp::enclose_piece(int k, double s, double t, double* lo, double* hi) const {
+  const int p = degree_;
+  double params[kMaxDegree];
+  double h[kMaxDim + 1];
+  const double pad = pad_[static_cast<std::size_t>(k)];
+  // Bezier point i of the piece over [s, t] is the blossom f(s^(p-i), t^i).
+  for (int i = 0; i <= p; ++i) {
+    for (int r = 0; r < p; ++r) params[r] = r < p - i ? s : t;
+    de_boor(k, params, h);
+    for (int c = 0; c < dim_; ++c) {
+      const double v = rational() ? h[c] / h[dim_] : h[c];
+      lo[c] = std::min(lo[c], v - pad);
+      hi[c] = std::max(hi[c], v + pad);
+    }
+  }
+}
+
+void BSplineOp::inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const {
+  const Interval t = args[0];
+  if (t.is_empty()) {
+    std::fill(out.begin(), out.end(), Interval::empty());
+    return;
+  }
+  const double a = std::max(t.lo(), lo()), b = std::min(t.hi(), hi());
+  const bool outside = t.lo() < lo() || t.hi() > hi();
+  if (a > b) {  // entirely outside the domain: an error everywhere
+    std::fill(out.begin(), out.end(), Interval::empty());
+    for (auto& e : err) e |= kCertainError;
+    return;
+  }
+  if (outside)
+    for (auto& e : err) e |= kMaybeError;
+  double lo_out[kMaxDim], hi_out[kMaxDim];
+  std::fill_n(lo_out, dim_, std::numeric_limits<double>::infinity());
+  std::fill_n(hi_out, dim_, -std::numeric_limits<double>::infinity());
+  const int ka = span(a), kb = span(b);
+  const std::size_t d = static_cast<std::size_t>(dim_);
+  for (int k = ka; k <= kb; ++k) {
+    const std::size_t ku = static_cast<std::size_t>(k);
+    const double u0 = knots_[ku], u1 = knots_[ku + 1];
+    if (!(u0 < u1)) continue;  // empty span: never evaluated
+    if (a <= u0 && u1 <= b) {
+      for (std::size_t c = 0; c < d; ++c) {
+        lo_out[c] = std::min(lo_out[c], span_lo_[ku * d + c]);
+        hi_out[c] = std::max(hi_out[c], span_hi_[ku * d + c]);
+      }
+    } else {
+      enclose_piece(k, std::max(a, u0), std::min(b, u1), lo_out, hi_out);
+    }
+  }
+  for (std::size_t c = 0; c < d; ++c) out[c] = Interval(lo_out[c], hi_out[c]);
+}
+
+std::shared_ptr<const BSplineOp> BSplineOp::derivative_op() const {
+  std::call_once(derivative_once_, [this] {
+    // c' = sum_i Q_i N_{i,p-1} with Q_i = p (P_{i+1} - P_i) / (u_{i+p+1} - u_{i+1}) over the
+    // knot vector without its end knots. A zero denominator belongs to a basis function
+    // that vanishes, so its Q_i is 0.
+    const int p = degree_;
+    const std::size_t d = static_cast<std::size_t>(dim_);
+    std::vector<double> q((static_cast<std::size_t>(n_) - 1) * d, 0.0);
+    for (std::size_t i = 0; i + 1 < static_cast<std::size_t>(n_); ++i) {
+      const double den = knots_[i + static_cast<std::size_t>(p) + 1] - knots_[i + 1];
+      if (den > 0.0)
+        for (std::size_t c = 0; c < d; ++c) q[i * d + c] = p * (points_[(i + 1) * d + c] - points_[i * d + c]) / den;
+    }
+    std::vector<double> knots(knots_.begin() + 1, knots_.end() - 1);
+    derivative_ = std::make_shared<BSplineOp>(dim_, p - 1, std::move(knots), std::move(q), std::vector<double>{},
+                                              kind_ + "'");
+  });
+  return derivative_;
+}
+
+std::shared_ptr<const BSplineOp> BSplineOp::homogeneous_op() const {
+  std::call_once(homogeneous_once_, [this] {
+    homogeneous_ = std::make_shared<BSplineOp>(dim_ + 1, degree_, knots_, hpoints_, std::vector<double>{},
+                                               kind_ + "-homogeneous");
+  });
+  return homogeneous_;
+}
+
+Fn BSplineOp::derivative(std::span<const Fn> args, int) const {
+  if (!rational()) {
+    if (degree_ == 0) return Fn(std::vector<NodeId>(static_cast<std::size_t>(dim_), dag::constant(0.0)));
+    return genmod::apply_custom(std::shared_ptr<const CustomOp>(derivative_op()), args);
+  }
+  // c = A / w with (A, w) a polynomial B-spline H: c' = (A' - w' c) / w.
+  const auto h = homogeneous_op();
+  const Fn hv = genmod::apply_custom(std::shared_ptr<const CustomOp>(h), args);
+  const Fn hd = h->derivative(args, 0);
+  const Fn c = genmod::apply_custom(std::shared_ptr<const CustomOp>(shared_from_this()), args);
+  std::vector<Fn> parts;
+  const std::size_t d = static_cast<std::size_t>(dim_);
+  for (std::size_t j = 0; j < d; ++j) parts.push_back((hd[j] - hd[d] * c[j]) / hv[d]);
+  return cat(parts);
+}
+
+}  // namespace genmod::detail

@@ -1,0 +1,199 @@
+// Curves: every kind through the shared properties (containment on boxes crossing knots,
+// derivatives, batch = scalar), the defining identities of each kind, tightness of the
+// sub-span hull, exact derivatives, and bad input.
+#include "genmod/operators/curve.hpp"
+#include "genmod/operators/vector.hpp"
+#include "genmod/kernel/interval_evaluator.hpp"
+#include "operators/operator_properties.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <thread>
+
+namespace genmod {
+namespace {
+
+using testing::check_operator_properties;
+using testing::PropertySpec;
+using testing::unit_domain;
+
+Curve::Points random_points(std::mt19937_64& rng, int n, int dim) {
+  std::uniform_real_distribution<double> c(-2, 2);
+  Curve::Points p(static_cast<std::size_t>(n), std::vector<double>(static_cast<std::size_t>(dim)));
+  for (auto& q : p)
+    for (auto& v : q) v = c(rng);
+  return p;
+}
+
+// Clamped knots on [0, 1] with random interior knots (some repeated).
+std::vector<double> random_knots(std::mt19937_64& rng, int n, int degree) {
+  std::uniform_real_distribution<double> c(0.05, 0.95);
+  std::vector<double> interior;
+  while (static_cast<int>(interior.size()) < n - degree - 1) {
+    const double k = c(rng);
+    interior.push_back(k);
+    if (rng() % 4 == 0 && degree > 1 && static_cast<int>(interior.size()) < n - degree - 1) interior.push_back(k);
+  }
+  std::sort(interior.begin(), interior.end());
+  std::vector<double> knots(static_cast<std::size_t>(degree) + 1, 0.0);
+  knots.insert(knots.end(), interior.begin(), interior.end());
+  knots.insert(knots.end(), static_cast<std::size_t>(degree) + 1, 1.0);
+  return knots;
+}
+
+PropertySpec curve_spec(const Curve& c) {
+  PropertySpec spec = unit_domain(1);
+  spec.domain[0] = Interval(c.domain().first, c.domain().second);
+  spec.breaks.push_back(c.knots());
+  spec.boxes = 200;
+  return spec;
+}
+
+TEST(Curve, BSplinesOfDegree1To5Properties) {
+  std::mt19937_64 rng(31);
+  for (int degree = 1; degree <= 5; ++degree)
+    for (int trial = 0; trial < 3; ++trial) {
+      const int n = degree + 1 + static_cast<int>(rng() % 6);
+      const Curve c = Curve::bspline(random_points(rng, n, 1 + trial), degree, random_knots(rng, n, degree));
+      SCOPED_TRACE("degree " + std::to_string(degree) + " trial " + std::to_string(trial));
+      check_operator_properties(c(x(0)), curve_spec(c), 100u + static_cast<unsigned>(degree * 3 + trial));
+    }
+}
+
+TEST(Curve, OtherKindsProperties) {
+  std::mt19937_64 rng(32);
+  const Curve::Points pts = random_points(rng, 6, 3);
+  std::vector<Curve> curves = {Curve::polyline(pts), Curve::bezier(pts), Curve::uniform_bspline(pts, 3),
+                               Curve::uniform_bspline(pts, 2, false), Curve::hermite(pts, random_points(rng, 6, 3)),
+                               Curve::catmull_rom(pts), Curve::nurbs(pts, {1.0, 0.5, 2.0, 1.5, 0.3, 1.0}, 3)};
+  for (const Curve& c : curves) {
+    SCOPED_TRACE(c.op()->name());
+    check_operator_properties(c(x(0)), curve_spec(c), 33);
+  }
+  // Composed with a function of two variables (the argument is any scalar Fn).
+  // (degree 5 on 6 points: one polynomial piece, so differences see no knot).
+  const Curve c = Curve::uniform_bspline(pts, 5);
+  check_operator_properties(c(x(0) * x(1)) * x(1), unit_domain(2), 34);
+}
+
+TEST(Curve, KindsSatisfyTheirDefinitions) {
+  const Curve::Points pts = {{0, 0}, {1, 2}, {3, 1}, {4, 4}};
+  // Polyline: vertex i at i / (n - 1), straight in between.
+  const Fn poly = Curve::polyline(pts)(x(0));
+  EXPECT_EQ(evaluate(poly, std::vector<double>{1.0 / 3})[1], 2.0);
+  EXPECT_NEAR(evaluate(poly, std::vector<double>{0.5})[0], 2.0, 1e-15);
+  // Bezier: Bernstein form.
+  const double t = 0.3, s = 1 - t;
+  const double bx = 3 * s * s * t * 1 + 3 * s * t * t * 3 + t * t * t * 4;
+  EXPECT_NEAR(evaluate(Curve::bezier(pts)(x(0)), std::vector<double>{t})[0], bx, 1e-15);
+  // Catmull-Rom interpolates; Hermite hits points and tangents.
+  const Fn cr = Curve::catmull_rom(pts)(x(0));
+  for (int i = 0; i < 4; ++i) {
+    const auto p = evaluate(cr, std::vector<double>{i / 3.0});
+    EXPECT_NEAR(p[0], pts[static_cast<std::size_t>(i)][0], 1e-14);
+    EXPECT_NEAR(p[1], pts[static_cast<std::size_t>(i)][1], 1e-14);
+  }
+  const Curve::Points tangents = {{1, 0}, {0, 1}, {-1, 0}, {2, 2}};
+  const Fn h = Curve::hermite(pts, tangents)(x(0));
+  const Fn dh = derivative(h, 0);
+  for (int i = 0; i < 4; ++i)
+    for (std::size_t j = 0; j < 2; ++j) {
+      EXPECT_NEAR(evaluate(h, std::vector<double>{i / 3.0})[j], pts[static_cast<std::size_t>(i)][j], 1e-14);
+      EXPECT_NEAR(evaluate(dh, std::vector<double>{i / 3.0})[j], tangents[static_cast<std::size_t>(i)][j], 1e-13);
+    }
+  // NURBS: a quarter circle is exact.
+  const Curve arc = Curve::nurbs({{1, 0}, {1, 1}, {0, 1}}, {1, std::sqrt(0.5), 1}, 2);
+  const Fn r = length(arc(x(0)));
+  for (double u = 0; u <= 1; u += 0.05) EXPECT_NEAR(evaluate(r, std::vector<double>{u})[0], 1.0, 1e-15);
+  // Outside the domain: an error, flagged by the inclusion function too.
+  EXPECT_TRUE(std::isnan(evaluate(poly, std::vector<double>{1.01})[0]));
+  IntervalEvaluator iv;
+  iv.eval(Tape(poly), {Interval(0.5, 1.5)});
+  EXPECT_EQ(iv.errors()[0], kMaybeError);
+  iv.eval(Tape(poly), {Interval(2, 3)});
+  EXPECT_EQ(iv.errors()[0], kCertainError);
+}
+
+TEST(Curve, DerivativesAreExactSplines) {
+  // A degree-p polynomial B-spline differentiated p + 1 times is 0; the p-th derivative is
+  // piecewise constant.
+  std::mt19937_64 rng(35);
+  const Curve c = Curve::bspline(random_points(rng, 7, 2), 4, random_knots(rng, 7, 4));
+  Fn d = c(x(0));
+  for (int k = 0; k < 4; ++k) d = derivative(d, 0);
+  const std::vector<double> knots = c.knots();
+  const double mid = 0.5 * (knots[4] + knots[5]);
+  const double left = knots[4] + 0.25 * (knots[5] - knots[4]);
+  EXPECT_EQ(evaluate(d, std::vector<double>{mid})[0], evaluate(d, std::vector<double>{left})[0]);
+  const Fn d5 = derivative(d, 0);
+  EXPECT_TRUE(d5[0].is_constant() && d5[1].is_constant());
+  // NURBS derivative (quotient rule) against differences, including the chain rule.
+  const Curve arc = Curve::nurbs({{1, 0}, {1, 1}, {0, 1}}, {1, std::sqrt(0.5), 1}, 2);
+  check_operator_properties(arc(square(x(0))), curve_spec(arc), 36);
+}
+
+TEST(Curve, EnclosureTightensQuadraticallyOnSubSpans) {
+  std::mt19937_64 rng(37);
+  const Curve c = Curve::uniform_bspline(random_points(rng, 8, 1), 3);
+  const Tape tape(c(x(0)));
+  IntervalEvaluator iv;
+  PointEvaluator pv;
+  double previous_excess = 0.0;
+  for (double w : {0.1, 0.05, 0.025}) {
+    double worst = 0.0;
+    for (double a = 0.0; a + w <= 1.0; a += 0.0371) {
+      const Interval y = iv.eval(tape, {Interval(a, a + w)})[0];
+      double lo = 1e300, hi = -1e300;
+      for (int k = 0; k <= 200; ++k) {
+        const double v = pv.eval(tape, {a + w * k / 200})[0];
+        lo = std::min(lo, v), hi = std::max(hi, v);
+      }
+      worst = std::max(worst, (y.hi() - y.lo()) - (hi - lo));
+    }
+    if (previous_excess > 0) {
+      EXPECT_LT(worst, previous_excess * 0.35) << "width " << w;  // ~1/4 when quadratic
+    }
+    previous_excess = worst;
+  }
+}
+
+TEST(Curve, DerivativeOperatorIsSharedAcrossThreads) {
+  // The derivative operator is built once (guarded), so concurrent differentiation yields
+  // the same hash-consed nodes and concurrent evaluation the same values.
+  const Curve c = Curve::nurbs({{1, 0}, {1, 1}, {0, 1}, {-1, 1}}, {1, 0.7, 1, 2}, 3);
+  std::vector<Fn> results(4);
+  std::vector<double> values(4);
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < 4; ++i)
+    threads.emplace_back([&, i] {
+      results[i] = derivative(c(x(0)), 0);
+      values[i] = evaluate(results[i], std::vector<double>{0.3})[1];
+    });
+  for (auto& th : threads) th.join();
+  for (std::size_t i = 1; i < 4; ++i) {
+    EXPECT_TRUE(results[i] == results[0]);
+    EXPECT_EQ(values[i], values[0]);
+  }
+}
+
+TEST(Curve, BadInputIsReported) {
+  EXPECT_THROW(Curve::polyline({{0, 0}}), std::invalid_argument);
+  EXPECT_THROW(Curve::polyline({{0, 0}, {1}}), std::invalid_argument);
+  EXPECT_THROW(Curve::bspline({{0}, {1}, {2}}, 3, {0, 0, 0, 0, 1, 1, 1}), std::invalid_argument);  // too few points
+  EXPECT_THROW(Curve::bspline({{0}, {1}, {2}}, 2, {0, 0, 0, 1, 1}), std::invalid_argument);        // knot count
+  try {
+    Curve::bspline({{0}, {1}, {2}, {3}}, 2, {0, 0, 0, 0.7, 0.5, 1, 1});
+    ADD_FAILURE() << "decreasing knots accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("nondecreasing"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(Curve::nurbs({{0}, {1}, {2}}, {1, 0, 1}, 2), std::invalid_argument);
+  EXPECT_THROW(Curve::nurbs({{0}, {1}, {2}}, {1, 1}, 2), std::invalid_argument);
+  EXPECT_THROW(Curve::hermite({{0}, {1}}, {{0}}), std::invalid_argument);
+  EXPECT_THROW(Curve::bezier({{0}, {1}})(cat({x(0), x(1)})), std::invalid_argument);
+  EXPECT_THROW(Curve::uniform_bspline({{0}, {1}}, 0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace genmod
