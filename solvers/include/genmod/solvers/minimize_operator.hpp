@@ -1,0 +1,54 @@
+// GENMOD's m_minimize (snyder.md section 2.4.13) as Fn operators: the global minimizer point
+// and the minimum value of an objective over the unknowns, as functions of the remaining (free)
+// coordinates.
+//
+//   using namespace genmod;
+//   const int unknowns[] = {0};
+//   Fn f = square(x(0) - x(1)) + square(x(1));            // min over x0 is x1^2, at x0 = x1
+//   Fn v = minimum_value(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-8);   // a function of x1
+//   Fn m = minimize(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-8);        // ~ x1
+//
+// Point evaluation at free values p: genmod::minimize() over the unknowns and the free
+// coordinates together, the free sides degenerate ([p, p], never split), with options epsilon
+// and delta = epsilon. minimum_value = the midpoint of the guaranteed bracket; minimize = the
+// verified feasible best_point (within about epsilon of a minimizer, not refined). NaN when
+// the problem is infeasible, no point was verified feasible (equality constraints: see
+// minimizer.hpp) or the bracket is wider than delta (a limit stopped the search).
+//
+// Inclusion of the minimum value over a box P of the free coordinates, with f*(p) the minimum:
+//  * lower: the guaranteed lower bound of the joint minimization over domain x P (<= f*(p)
+//    for every p in P), minus delta;
+//  * upper: if the x part x* of the joint best point satisfies the constraint on [x*] x P for
+//    certain (no possible error), f(x*, P).hi() >= f*(p) for every p; otherwise the natural
+//    bound of the objective over domain x P. Plus delta (point values lie within delta of f*).
+// Errors: proven infeasible -> empty + kCertainError; kNoError when x* was feasible for all of
+// P; otherwise kMaybeError. The minimizer point's inclusion: with U the value inclusion's upper
+// end, every point value q at p in P is feasible with f(q, p) <= U, so it lies in a box the
+// constraint solver returns for "f(x, p) <= U && constraint" over domain x P; the result is
+// the hull of those boxes widened by epsilon, always with kMaybeError (a point value may fail
+// to be verified).
+//
+// Derivatives: the minimum value by the envelope theorem, df*/dp = (df/dp)(x*(p), p), valid for
+// unconstrained minima or inactive constraints. The minimizer point's derivative (implicit
+// function theorem on grad f = 0) is not implemented: it is NaN.
+#pragma once
+
+#include "genmod/kernel/fn.hpp"
+#include "genmod/solvers/box.hpp"
+
+#include <span>
+
+namespace genmod {
+
+// The global minimizer (dimension n = unknowns.size()). Throws std::invalid_argument naming the
+// problem for: a non-scalar objective or constraint, no unknowns, an unknown repeated or out of
+// range, a domain of the wrong dimension or with an empty, NaN or unbounded side, an epsilon
+// that is not finite and > 0.
+Fn minimize(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+            double epsilon);
+
+// The minimum value (scalar); same arguments and errors as minimize().
+Fn minimum_value(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+                 double epsilon);
+
+}  // namespace genmod

@@ -1,0 +1,252 @@
+// m_solve as a custom operator (see solve_operator.hpp): the constraint solver for points and
+// boxes, Newton refinement of the chosen solution, the implicit function theorem (Cramer's rule
+// on kernel Fn expressions) for derivatives.
+#include "genmod/solvers/solve_operator.hpp"
+
+#include "genmod/kernel/custom_op.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/kernel/tape.hpp"
+#include "genmod/solvers/constraint_solver.hpp"
+#include "genmod/solvers/constraint_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace genmod {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t kMaxCramer = 4;
+
+// Determinant of the n x n matrix m (row major) by cofactor expansion along the first row.
+Fn determinant(const std::vector<Fn>& m, std::size_t n) {
+  if (n == 1) return m[0];
+  if (n == 2) return m[0] * m[3] - m[1] * m[2];
+  Fn det(0.0);
+  for (std::size_t j = 0; j < n; ++j) {
+    std::vector<Fn> minor;
+    for (std::size_t r = 1; r < n; ++r)
+      for (std::size_t c = 0; c < n; ++c)
+        if (c != j) minor.push_back(m[r * n + c]);
+    const Fn term = m[j] * determinant(minor, n - 1);
+    det = (j % 2 == 0) ? det + term : det - term;
+  }
+  return det;
+}
+
+// Solves a x = b (n x n, row major) by Gaussian elimination with partial pivoting; false if
+// singular.
+bool linear_solve(std::vector<double> a, std::vector<double>& b, std::size_t n) {
+  for (std::size_t k = 0; k < n; ++k) {
+    std::size_t piv = k;
+    for (std::size_t r = k + 1; r < n; ++r)
+      if (std::abs(a[r * n + k]) > std::abs(a[piv * n + k])) piv = r;
+    if (!(std::abs(a[piv * n + k]) > 0.0)) return false;
+    if (piv != k) {
+      for (std::size_t c = 0; c < n; ++c) std::swap(a[k * n + c], a[piv * n + c]);
+      std::swap(b[k], b[piv]);
+    }
+    for (std::size_t r = k + 1; r < n; ++r) {
+      const double f = a[r * n + k] / a[k * n + k];
+      for (std::size_t c = k; c < n; ++c) a[r * n + c] -= f * a[k * n + c];
+      b[r] -= f * b[k];
+    }
+  }
+  for (std::size_t k = n; k-- > 0;) {
+    double s = b[k];
+    for (std::size_t c = k + 1; c < n; ++c) s -= a[k * n + c] * b[c];
+    b[k] = s / a[k * n + k];
+  }
+  return std::all_of(b.begin(), b.end(), [](double v) { return std::isfinite(v); });
+}
+
+class SolveOp : public CustomOp, public std::enable_shared_from_this<SolveOp> {
+ public:
+  SolveOp(Fn constraint, std::vector<int> unknowns, std::vector<int> free, Box domain, double epsilon)
+      : constraint_(std::move(constraint)),
+        unknowns_(std::move(unknowns)),
+        free_(std::move(free)),
+        domain_(std::move(domain)),
+        epsilon_(epsilon) {
+    const std::size_t n = unknowns_.size();
+    inputs_ = unknowns_;
+    inputs_.insert(inputs_.end(), free_.begin(), free_.end());
+    const ConstraintSystem sys(constraint_, unknowns_, free_);
+    std::vector<Fn> eqs;
+    for (const ConstraintSystem::Conjunct& c : sys.conjuncts())
+      if (c.rel == Relation::Eq) eqs.push_back(sys.atoms()[c.atom].h);
+    if (eqs.size() != n) return;  // not a square equality system: no Newton, NaN derivative
+    square_ = true;
+    // Newton tape: h (n outputs), then J_x row major (n * n outputs).
+    std::vector<Fn> parts = eqs;
+    std::vector<Fn> jx;
+    for (const Fn& h : eqs)
+      for (int u : unknowns_) jx.push_back(genmod::derivative(h, u));
+    parts.insert(parts.end(), jx.begin(), jx.end());
+    newton_ = std::make_shared<const Tape>(cat(parts), inputs_);
+    if (n > kMaxCramer) return;
+    // dR_j/dp_k = -det(J_x with column j replaced by dh/dp_k) / det(J_x).
+    const Fn det = determinant(jx, n);
+    for (int p : free_) {
+      std::vector<Fn> col;
+      for (const Fn& h : eqs) col.push_back(genmod::derivative(h, p));
+      std::vector<Fn> dk;
+      for (std::size_t j = 0; j < n; ++j) {
+        std::vector<Fn> m = jx;
+        for (std::size_t i = 0; i < n; ++i) m[i * n + j] = col[i];
+        dk.push_back(-determinant(m, n) / det);
+      }
+      partials_.push_back(cat(dk));
+    }
+  }
+
+  std::string name() const override { return "solve"; }
+  int num_args() const override { return static_cast<int>(free_.size()); }
+  int num_outputs() const override { return static_cast<int>(unknowns_.size()); }
+
+  void eval(std::span<const double> args, std::span<double> out) const override {
+    std::fill(out.begin(), out.end(), kNaN);
+    FreeParameters params{free_, {}};
+    for (double a : args) {
+      if (!std::isfinite(a)) return;
+      params.values.emplace_back(a);
+    }
+    SolveOptions opt;
+    opt.epsilon = epsilon_;
+    opt.threads = 1;
+    const SolveResult r = genmod::solve(constraint_, unknowns_, domain_, opt, params);
+    if (!r.complete() || r.components.empty()) return;
+    const Box* first = &r.components[0].hull;
+    for (const SolutionComponent& c : r.components) {
+      if (std::lexicographical_compare(c.hull.begin(), c.hull.end(), first->begin(), first->end(),
+                                       [](const Interval& a, const Interval& b) { return a.lo() < b.lo(); }))
+        first = &c.hull;
+    }
+    std::vector<double> xs = midpoint(*first);
+    refine(xs, args, *first);
+    std::copy(xs.begin(), xs.end(), out.begin());
+  }
+
+  void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override {
+    auto all = [&](const Interval& v, std::uint8_t e) {
+      std::fill(out.begin(), out.end(), v);
+      for (auto& b : err) b |= e;
+    };
+    for (const Interval& a : args)
+      if (a.is_empty()) return all(Interval::empty(), kCertainError);
+    for (const Interval& a : args) {
+      if (!a.is_bounded()) {
+        std::copy(domain_.begin(), domain_.end(), out.begin());
+        for (auto& b : err) b |= kMaybeError;
+        return;
+      }
+    }
+    SolveOptions opt;
+    opt.epsilon = std::max(epsilon_, 0.01 * width(args));
+    opt.threads = 1;
+    opt.limits.max_boxes = 20000;
+    const SolveResult r = genmod::solve(constraint_, unknowns_, domain_, opt, FreeParameters{free_, Box(args.begin(), args.end())});
+    if (r.boxes.empty()) return all(Interval::empty(), kCertainError);
+    const Interval margin(-epsilon_, epsilon_);
+    bool exists = false;
+    for (std::size_t k = 0; k < unknowns_.size(); ++k) {
+      Interval h = Interval::empty();
+      for (const SolutionBox& b : r.boxes) h = hull(h, b.box[k]);
+      out[k] = intersect(h + margin, domain_[k]);
+    }
+    for (const SolutionBox& b : r.boxes)
+      exists = exists || b.status == SolutionStatus::CertifiedUnique || b.status == SolutionStatus::Feasible;
+    if (!exists || !r.complete())
+      for (auto& b : err) b |= kMaybeError;
+  }
+
+  Fn derivative(std::span<const Fn> args, int k) const override {
+    const std::size_t n = unknowns_.size();
+    if (partials_.empty()) return cat(std::vector<Fn>(n, Fn(kNaN)));
+    const Fn r = apply_custom(shared_from_this(), args);
+    std::vector<Fn> at;
+    for (std::size_t j = 0; j < n; ++j) at.push_back(r[j]);
+    at.insert(at.end(), args.begin(), args.end());
+    return compose_all(partials_.at(static_cast<std::size_t>(k)), inputs_, cat(at));
+  }
+
+ private:
+  // Newton steps on the square equality system from xs, kept while they stay in `hull` and
+  // reduce the residual's max norm.
+  void refine(std::vector<double>& xs, std::span<const double> args, const Box& hull) const {
+    if (!square_) return;
+    const std::size_t n = unknowns_.size();
+    PointEvaluator ev;
+    std::vector<double> point(inputs_.size());
+    std::copy(args.begin(), args.end(), point.begin() + static_cast<std::ptrdiff_t>(n));
+    auto residual = [&](std::span<const double> y) {
+      double m = 0.0;
+      for (std::size_t i = 0; i < n; ++i) m = std::isnan(y[i]) ? kNaN : std::max(m, std::abs(y[i]));
+      return m;
+    };
+    std::copy(xs.begin(), xs.end(), point.begin());
+    const auto y0 = ev.eval(*newton_, point);
+    std::vector<double> y(y0.begin(), y0.end());
+    double res = residual(y);
+    for (int iter = 0; iter < 30 && res > 0.0; ++iter) {
+      std::vector<double> step(y.begin(), y.begin() + static_cast<std::ptrdiff_t>(n));
+      if (!linear_solve(std::vector<double>(y.begin() + static_cast<std::ptrdiff_t>(n), y.end()), step, n)) return;
+      std::vector<double> next(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        next[i] = xs[i] - step[i];
+        if (!hull[i].contains(next[i])) return;
+      }
+      std::copy(next.begin(), next.end(), point.begin());
+      const auto yn = ev.eval(*newton_, point);
+      const double rn = residual(yn);
+      if (!(rn < res)) return;
+      xs = next;
+      y.assign(yn.begin(), yn.end());
+      res = rn;
+    }
+  }
+
+  Fn constraint_;
+  std::vector<int> unknowns_, free_;
+  std::vector<int> inputs_;  // unknowns then free coordinates: the order of the tapes and partials
+  Box domain_;
+  double epsilon_;
+  bool square_ = false;
+  std::shared_ptr<const Tape> newton_;  // h and J_x over inputs_ (square systems only)
+  std::vector<Fn> partials_;            // dR/d free_k (dimension n) over inputs_
+};
+
+}  // namespace
+
+Fn solve(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon) {
+  const std::string who = "genmod: solve operator: ";
+  if (constraint.dim() != 1)
+    throw std::invalid_argument(who + "the constraint must be scalar, got dimension " + std::to_string(constraint.dim()));
+  if (unknowns.empty()) throw std::invalid_argument(who + "no unknowns");
+  std::uint64_t mask = 0;
+  for (int u : unknowns) {
+    if (u < 0 || u >= kMaxInputs)
+      throw std::invalid_argument(who + "unknown " + std::to_string(u) + " is outside [0, " + std::to_string(kMaxInputs) + ")");
+    if (mask & (std::uint64_t{1} << u)) throw std::invalid_argument(who + "unknown x(" + std::to_string(u) + ") is listed twice");
+    mask |= std::uint64_t{1} << u;
+  }
+  check_search_box(domain, unknowns.size(), "solve operator (domain)");
+  if (!(epsilon > 0.0) || !std::isfinite(epsilon))
+    throw std::invalid_argument(who + "epsilon must be finite and > 0, got " + std::to_string(epsilon));
+  std::vector<int> free;
+  for (int c : constraint.inputs())
+    if (!(mask & (std::uint64_t{1} << c))) free.push_back(c);
+  auto op = std::make_shared<const SolveOp>(constraint, std::vector<int>(unknowns.begin(), unknowns.end()), free,
+                                            domain, epsilon);
+  std::vector<Fn> args;
+  for (int c : free) args.push_back(x(c));
+  return apply_custom(op, args);
+}
+
+}  // namespace genmod

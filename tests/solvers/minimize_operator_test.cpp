@@ -1,0 +1,90 @@
+// The minimize operators (m_minimize, snyder.md section 2.4.13): minimizer point and minimum
+// value as functions of the free coordinates; inclusion over parameter boxes; the envelope
+// theorem derivative of the minimum value.
+#include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/kernel/tape.hpp"
+#include "genmod/solvers/minimize_operator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace genmod {
+namespace {
+
+double at(const Fn& f, std::vector<double> coords, std::size_t j = 0) { return evaluate(f, coords)[j]; }
+
+// min over x0 in [-2, 2] of (x0 - x1)^2 + x1^2 = x1^2, at x0 = x1.
+Fn objective() { return square(x(0) - x(1)) + square(x(1)); }
+const int kUnknowns[] = {0};
+
+TEST(MinimizeOperator, PointValues) {
+  const Fn v = minimum_value(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  const Fn m = minimize(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  EXPECT_EQ(v.dim(), 1u);
+  EXPECT_EQ(m.dim(), 1u);
+  EXPECT_EQ(v.inputs(), std::vector<int>{1});
+  for (double p : {-0.7, 0.0, 0.4, 1.1}) {
+    EXPECT_NEAR(at(v, {0, p}), p * p, 1e-7) << p;
+    EXPECT_NEAR(at(m, {0, p}), p, 1e-4) << p;
+  }
+}
+
+TEST(MinimizeOperator, EnvelopeDerivativeOfTheMinimumValue) {
+  const Fn v = minimum_value(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-9);
+  const Fn d = derivative(v, 1);
+  const double h = 1e-3;
+  for (double p : {-0.6, 0.2, 0.9}) {
+    EXPECT_NEAR(at(d, {0, p}), 2 * p, 1e-3) << p;
+    EXPECT_NEAR(at(d, {0, p}), (at(v, {0, p + h}) - at(v, {0, p - h})) / (2 * h), 1e-3) << p;
+  }
+  // The minimizer's derivative is documented as not implemented (NaN).
+  const Fn m = minimize(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  EXPECT_TRUE(std::isnan(at(derivative(m, 1), {0, 0.3})));
+}
+
+TEST(MinimizeOperator, InclusionContainsSampledValues) {
+  const Fn v = minimum_value(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  const Fn m = minimize(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  const Tape tv(v), tm(m);
+  IntervalEvaluator iv;
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  for (int i = 0; i < 8; ++i) {
+    double a = u(rng), b = u(rng);
+    if (a > b) std::swap(a, b);
+    const Interval yv = iv.eval(tv, {Interval(a, b)})[0];
+    EXPECT_EQ(iv.errors()[0], kNoError);
+    const Interval ym = iv.eval(tm, {Interval(a, b)})[0];
+    for (int k = 0; k <= 6; ++k) {
+      const double p = a + (b - a) * k / 6.0;
+      EXPECT_TRUE(yv.contains(at(v, {0, p}))) << yv << " misses " << at(v, {0, p});
+      EXPECT_TRUE(ym.contains(at(m, {0, p}))) << ym << " misses " << at(m, {0, p});
+    }
+  }
+}
+
+TEST(MinimizeOperator, InfeasibleIsAnError) {
+  // x0 >= x1 + 3 has no solution in [-2, 2] for x1 > -1.
+  const Fn v = minimum_value(objective(), x(0) >= x(1) + 3.0, kUnknowns, {Interval(-2, 2)}, 1e-8);
+  EXPECT_TRUE(std::isnan(at(v, {0, 0.5})));
+  IntervalEvaluator iv;
+  const Interval y = iv.eval(Tape(v), {Interval(0.0, 1.0)})[0];
+  EXPECT_TRUE(y.is_empty());
+  EXPECT_EQ(iv.errors()[0], kCertainError);
+}
+
+TEST(MinimizeOperator, BadInputThrows) {
+  EXPECT_THROW(minimize(cat({x(0), x(0)}), Fn(1.0), kUnknowns, {Interval(0, 1)}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(minimize(x(0), cat({x(0), x(0)}), kUnknowns, {Interval(0, 1)}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(minimum_value(x(0), Fn(1.0), kUnknowns, {Interval(0, 1), Interval(0, 1)}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(minimum_value(x(0), Fn(1.0), kUnknowns, {Interval(0, 1)}, 0.0), std::invalid_argument);
+  EXPECT_THROW(minimum_value(x(0), Fn(1.0), kUnknowns, {Interval::entire()}, 1e-6), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace genmod
