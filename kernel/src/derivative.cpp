@@ -2,7 +2,9 @@
 #include "genmod/kernel/custom_op.hpp"
 #include "genmod/kernel/fn.hpp"
 
+#include <map>
 #include <numbers>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -93,7 +95,12 @@ class Differentiator {
     for (std::size_t k = 0; k < args.size(); ++k) {
       const NodeId dk = d(args[k]);
       if (zero(dk)) continue;
-      const Fn partial = op.derivative(arg_fns, static_cast<int>(k));
+      // One request per (call, argument): the partials of all outputs come together.
+      const auto key = std::make_tuple(n.custom, n.arg[0], k);
+      auto it = custom_partials_.find(key);
+      if (it == custom_partials_.end())
+        it = custom_partials_.emplace(key, op.derivative(arg_fns, static_cast<int>(k))).first;
+      const Fn& partial = it->second;
       if (partial.dim() != static_cast<std::size_t>(op.num_outputs()))
         throw std::logic_error("genmod: custom operator '" + op.name() + "' derivative has dimension " +
                                std::to_string(partial.dim()) + ", expected " + std::to_string(op.num_outputs()));
@@ -104,6 +111,7 @@ class Differentiator {
 
   int var_;
   std::unordered_map<NodeId, NodeId> memo_;
+  std::map<std::tuple<std::uint32_t, std::uint32_t, std::size_t>, Fn> custom_partials_;
 };
 
 // Rebuilds a DAG with some coordinates replaced (simplifying on the way).

@@ -252,11 +252,9 @@ std::span<const Interval> IntervalEvaluator::eval(const Tape& tape, std::span<co
           e[out] = box[c.a].is_empty() ? kCertainError : kNoError;
           r[out] = box[c.a];
           break;
-        case Op::Call: {
-          call(tape, c.a);
-          jump = true;  // continuity of custom operators is not known
+        case Op::Call:
+          if (!call(tape, c.a)) jump = true;
           break;
-        }
         case Op::CallOut:
           e[out] = slot_err_[c.a];
           r[out] = slots_[c.a];
@@ -365,8 +363,9 @@ Interval IntervalEvaluator::other_op(const Clause& c, std::span<const double> k,
 }
 
 // Runs custom call site `call`; custom operators use protected arithmetic in the default
-// rounding mode, so the evaluator's upward mode is suspended around them.
-void IntervalEvaluator::call(const Tape& tape, std::uint32_t call) {
+// rounding mode, so the evaluator's upward mode is suspended around them. Returns whether the
+// operator is continuous.
+bool IntervalEvaluator::call(const Tape& tape, std::uint32_t call) {
   const CallSite& cs = tape.calls()[call];
   call_args_.resize(cs.num_args);
   std::uint8_t arg_err = kNoError;
@@ -377,9 +376,11 @@ void IntervalEvaluator::call(const Tape& tape, std::uint32_t call) {
   }
   std::fill_n(slot_err_.begin() + cs.first_slot, cs.num_outputs, arg_err);
   std::fesetround(FE_TONEAREST);
-  dag::custom(cs.op_id).inclusion(call_args_, std::span(slots_).subspan(cs.first_slot, cs.num_outputs),
-                                  std::span(slot_err_).subspan(cs.first_slot, cs.num_outputs));
+  const CustomOp& op = dag::custom(cs.op_id);
+  op.inclusion(call_args_, std::span(slots_).subspan(cs.first_slot, cs.num_outputs),
+               std::span(slot_err_).subspan(cs.first_slot, cs.num_outputs));
   std::fesetround(FE_UPWARD);
+  return op.continuous();
 }
 
 }  // namespace genmod

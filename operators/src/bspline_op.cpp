@@ -84,6 +84,14 @@ BSplineOp::BSplineOp(int dim, int degree, std::vector<double> knots, std::vector
       enclose_piece(k, knots_[ku], knots_[ku + 1], lo_k, hi_k);
     }
   }
+  // Continuity: a piece boundary is C^(p - m) for an interior knot of multiplicity m, so the
+  // curve jumps where m > p (and every boundary of a degree-0 curve is a jump).
+  continuous_ = degree_ >= 1;
+  for (int k = degree_ + 1; k < n_ && continuous_; ++k) {
+    int m = 1;
+    while (k + m < n_ && knots_[static_cast<std::size_t>(k + m)] == knots_[static_cast<std::size_t>(k)]) ++m;
+    if (m > degree_) continuous_ = false;
+  }
 }
 
 int BSplineOp::span(double t) const noexcept {

@@ -37,6 +37,8 @@ class BSplineOp final : public CustomOp, public std::enable_shared_from_this<BSp
   void eval(std::span<const double> args, std::span<double> out) const override;
   void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override;
   Fn derivative(std::span<const Fn> args, int k) const override;
+  // Continuous inside its domain when no interior knot repeats more than degree times.
+  bool continuous() const override { return continuous_; }
 
   int dim() const noexcept { return dim_; }
   int degree() const noexcept { return degree_; }
@@ -66,6 +68,7 @@ class BSplineOp final : public CustomOp, public std::enable_shared_from_this<BSp
   std::string kind_;
   std::vector<double> span_lo_, span_hi_;  // padded enclosures of whole spans, n * dim
   std::vector<double> pad_;                // rounding allowance per span
+  bool continuous_ = false;
   mutable std::once_flag derivative_once_, homogeneous_once_;
   mutable std::shared_ptr<const BSplineOp> derivative_, homogeneous_;
 };

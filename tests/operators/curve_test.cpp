@@ -4,6 +4,8 @@
 #include "genmod/operators/curve.hpp"
 #include "genmod/operators/vector.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/kernel/inclusion.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
 #include "operators/operator_properties.hpp"
 
 #include <gtest/gtest.h>
@@ -193,6 +195,43 @@ TEST(Curve, BadInputIsReported) {
   EXPECT_THROW(Curve::hermite({{0}, {1}}, {{0}}), std::invalid_argument);
   EXPECT_THROW(Curve::bezier({{0}, {1}})(cat({x(0), x(1)})), std::invalid_argument);
   EXPECT_THROW(Curve::uniform_bspline({{0}, {1}}, 0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace genmod
+
+namespace genmod {
+namespace {
+
+// Curves declare continuity, so the mean value and monotonicity forms work through them
+// (and still contain every sampled value); a curve with a jump does not.
+TEST(CurveForms, DerivativeFormsApplyThroughContinuousCurves) {
+  const Curve::Points pts = {{0.0}, {1.0}, {0.5}, {2.0}, {1.5}, {3.0}};
+  const Curve smooth = Curve::uniform_bspline(pts, 3);
+  const Fn f = smooth(x(0)) * x(0) - square(x(0));  // dependency makes the natural form loose
+  InclusionFunction inc(f);
+  int narrower = 0;
+  for (int k = 0; k < 40; ++k) {
+    const double a = 0.02 * k, w = 0.05;
+    const std::vector<Interval> box = {Interval(a, a + w)};
+    const Interval natural = inc.eval(box, kNaturalForm)[0];
+    const Interval all = inc.eval(box, kAllForms)[0];
+    EXPECT_TRUE(natural.contains(all));
+    if (all.width() < natural.width()) ++narrower;
+    PointEvaluator pe;
+    for (int s = 0; s <= 20; ++s) {
+      const double t = a + w * s / 20;
+      EXPECT_TRUE(all.contains(pe.eval(inc.tape(), {t})[0])) << t;
+    }
+  }
+  EXPECT_GT(narrower, 20);
+  // A knot of multiplicity degree + 1 inside the domain is a jump: no derivative forms.
+  const Curve jump = Curve::bspline({{0.0}, {1.0}, {5.0}, {6.0}}, 1, {0, 0, 0.5, 0.5, 1, 1});
+  IntervalEvaluator ev;
+  ev.eval(Tape(jump(x(0))), {Interval(0.4, 0.6)});
+  EXPECT_FALSE(ev.continuous());
+  ev.eval(Tape(smooth(x(0))), {Interval(0.4, 0.6)});
+  EXPECT_TRUE(ev.continuous());
 }
 
 }  // namespace

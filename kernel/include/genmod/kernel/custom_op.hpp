@@ -38,6 +38,10 @@ class CustomOp {
   // Partial derivatives of all outputs with respect to argument k, as an Fn of dimension
   // num_outputs() built from the argument functions `args` (so it composes symbolically).
   virtual Fn derivative(std::span<const Fn> args, int k) const = 0;
+  // True if the outputs are continuous in the arguments wherever they are defined (no
+  // jumps), so that derivative-based inclusion forms (mean value, monotonicity) may be used
+  // through the operator. The default is the safe answer.
+  virtual bool continuous() const { return false; }
 };
 
 // Applies `op` to scalar argument functions; the result has op->num_outputs() components.

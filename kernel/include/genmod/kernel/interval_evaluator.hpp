@@ -38,7 +38,7 @@ class IntervalEvaluator {
 
  private:
   Interval other_op(const Clause& c, std::span<const double> k, std::uint8_t& err, bool& jump);
-  void call(const Tape& tape, std::uint32_t call);
+  bool call(const Tape& tape, std::uint32_t call);
 
   std::vector<Interval> regs_;
   std::vector<std::uint8_t> err_;
