@@ -68,12 +68,16 @@ bool linear_solve(std::vector<double> a, std::vector<double>& b, std::size_t n) 
 
 class SolveOp : public CustomOp, public std::enable_shared_from_this<SolveOp> {
  public:
-  SolveOp(Fn constraint, std::vector<int> unknowns, std::vector<int> free, Box domain, double epsilon)
+  // max_solutions == 0: the first solution (n outputs); K > 0: the count and up to K solutions
+  // (1 + K n outputs).
+  SolveOp(Fn constraint, std::vector<int> unknowns, std::vector<int> free, Box domain, double epsilon,
+          int max_solutions)
       : constraint_(std::move(constraint)),
         unknowns_(std::move(unknowns)),
         free_(std::move(free)),
         domain_(std::move(domain)),
-        epsilon_(epsilon) {
+        epsilon_(epsilon),
+        max_solutions_(max_solutions) {
     const std::size_t n = unknowns_.size();
     inputs_ = unknowns_;
     inputs_.insert(inputs_.end(), free_.begin(), free_.end());
@@ -106,9 +110,12 @@ class SolveOp : public CustomOp, public std::enable_shared_from_this<SolveOp> {
     }
   }
 
-  std::string name() const override { return "solve"; }
+  std::string name() const override { return max_solutions_ ? "solve-all" : "solve"; }
   int num_args() const override { return static_cast<int>(free_.size()); }
-  int num_outputs() const override { return static_cast<int>(unknowns_.size()); }
+  int num_outputs() const override {
+    const int n = static_cast<int>(unknowns_.size());
+    return max_solutions_ ? 1 + max_solutions_ * n : n;
+  }
 
   void eval(std::span<const double> args, std::span<double> out) const override {
     std::fill(out.begin(), out.end(), kNaN);
@@ -121,16 +128,26 @@ class SolveOp : public CustomOp, public std::enable_shared_from_this<SolveOp> {
     opt.epsilon = epsilon_;
     opt.threads = 1;
     const SolveResult r = genmod::solve(constraint_, unknowns_, domain_, opt, params);
-    if (!r.complete() || r.components.empty()) return;
-    const Box* first = &r.components[0].hull;
-    for (const SolutionComponent& c : r.components) {
-      if (std::lexicographical_compare(c.hull.begin(), c.hull.end(), first->begin(), first->end(),
-                                       [](const Interval& a, const Interval& b) { return a.lo() < b.lo(); }))
-        first = &c.hull;
+    if (!r.complete() || r.components.empty()) {
+      if (max_solutions_ && r.complete()) out[0] = 0.0;  // proven: no solution
+      return;
     }
-    std::vector<double> xs = midpoint(*first);
-    refine(xs, args, *first);
-    std::copy(xs.begin(), xs.end(), out.begin());
+    // Components in lexicographic order of their lower corners (x(unknowns[0]) first).
+    std::vector<const Box*> order;
+    for (const SolutionComponent& c : r.components) order.push_back(&c.hull);
+    std::sort(order.begin(), order.end(), [](const Box* a, const Box* b) {
+      return std::lexicographical_compare(a->begin(), a->end(), b->begin(), b->end(),
+                                          [](const Interval& u, const Interval& v) { return u.lo() < v.lo(); });
+    });
+    const std::size_t n = unknowns_.size();
+    const std::size_t count = max_solutions_ ? std::min<std::size_t>(order.size(), static_cast<std::size_t>(max_solutions_)) : 1;
+    const std::size_t first_slot = max_solutions_ ? 1 : 0;
+    if (max_solutions_) out[0] = static_cast<double>(count);
+    for (std::size_t j = 0; j < count; ++j) {
+      std::vector<double> xs = midpoint(*order[j]);
+      refine(xs, args, *order[j]);
+      std::copy(xs.begin(), xs.end(), out.begin() + static_cast<std::ptrdiff_t>(first_slot + j * n));
+    }
   }
 
   void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override {
@@ -154,26 +171,57 @@ class SolveOp : public CustomOp, public std::enable_shared_from_this<SolveOp> {
     const SolveResult r = genmod::solve(constraint_, unknowns_, domain_, opt, FreeParameters{free_, Box(args.begin(), args.end())});
     if (r.boxes.empty()) return all(Interval::empty(), kCertainError);
     const Interval margin(-epsilon_, epsilon_);
-    bool exists = false;
-    for (std::size_t k = 0; k < unknowns_.size(); ++k) {
-      Interval h = Interval::empty();
-      for (const SolutionBox& b : r.boxes) h = hull(h, b.box[k]);
-      out[k] = intersect(h + margin, domain_[k]);
+    const std::size_t n = unknowns_.size();
+    Box h(n, Interval::empty());
+    for (std::size_t k = 0; k < n; ++k) {
+      for (const SolutionBox& b : r.boxes) h[k] = hull(h[k], b.box[k]);
+      h[k] = intersect(h[k] + margin, domain_[k]);
     }
+    bool exists = false;
     for (const SolutionBox& b : r.boxes)
       exists = exists || b.status == SolutionStatus::CertifiedUnique || b.status == SolutionStatus::Feasible;
-    if (!exists || !r.complete())
-      for (auto& b : err) b |= kMaybeError;
+    if (!max_solutions_) {
+      std::copy(h.begin(), h.end(), out.begin());
+      if (!exists || !r.complete())
+        for (auto& b : err) b |= kMaybeError;
+      return;
+    }
+    // Solution slot j holds some solution (any of them may come j-th for some parameter value),
+    // and is certainly present when j < the number of components certified to hold exactly one
+    // solution for every parameter value (they are disjoint).
+    const std::size_t k_max = static_cast<std::size_t>(max_solutions_);
+    const std::size_t sure = r.complete() ? std::min(k_max, r.unique_components()) : 0;
+    const bool all_unique = r.complete() && r.unique_components() == r.components.size();
+    const std::size_t most = all_unique ? std::min(k_max, r.components.size()) : k_max;
+    out[0] = Interval(static_cast<double>(sure), static_cast<double>(most));
+    for (std::size_t j = 0; j < k_max; ++j)
+      for (std::size_t k = 0; k < n; ++k) {
+        out[1 + j * n + k] = h[k];
+        if (j >= sure) err[1 + j * n + k] |= kMaybeError;
+      }
+    if (!r.complete()) err[0] |= kMaybeError;
   }
 
   Fn derivative(std::span<const Fn> args, int k) const override {
     const std::size_t n = unknowns_.size();
-    if (partials_.empty()) return cat(std::vector<Fn>(n, Fn(kNaN)));
+    const std::size_t slots = max_solutions_ ? static_cast<std::size_t>(max_solutions_) : 1;
+    const std::size_t first_slot = max_solutions_ ? 1 : 0;
+    std::vector<Fn> out;
+    if (max_solutions_) out.push_back(Fn(0.0));  // the count is piecewise constant
     const Fn r = apply_custom(shared_from_this(), args);
-    std::vector<Fn> at;
-    for (std::size_t j = 0; j < n; ++j) at.push_back(r[j]);
-    at.insert(at.end(), args.begin(), args.end());
-    return compose_all(partials_.at(static_cast<std::size_t>(k)), inputs_, cat(at));
+    for (std::size_t j = 0; j < slots; ++j) {
+      if (partials_.empty()) {
+        for (std::size_t i = 0; i < n; ++i) out.push_back(Fn(kNaN));
+        continue;
+      }
+      // The implicit-function-theorem partials at solution j.
+      std::vector<Fn> at;
+      for (std::size_t i = 0; i < n; ++i) at.push_back(r[first_slot + j * n + i]);
+      at.insert(at.end(), args.begin(), args.end());
+      const Fn d = compose_all(partials_.at(static_cast<std::size_t>(k)), inputs_, cat(at));
+      for (std::size_t i = 0; i < n; ++i) out.push_back(d[i]);
+    }
+    return cat(out);
   }
 
  private:
@@ -217,6 +265,7 @@ class SolveOp : public CustomOp, public std::enable_shared_from_this<SolveOp> {
   std::vector<int> inputs_;  // unknowns then free coordinates: the order of the tapes and partials
   Box domain_;
   double epsilon_;
+  int max_solutions_ = 0;
   bool square_ = false;
   std::shared_ptr<const Tape> newton_;  // h and J_x over inputs_ (square systems only)
   std::vector<Fn> partials_;            // dR/d free_k (dimension n) over inputs_
@@ -224,7 +273,10 @@ class SolveOp : public CustomOp, public std::enable_shared_from_this<SolveOp> {
 
 }  // namespace
 
-Fn solve(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon) {
+namespace {
+
+std::shared_ptr<const SolveOp> make_solve_op(const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+                                             double epsilon, int max_solutions, std::vector<int>* free) {
   const std::string who = "genmod: solve operator: ";
   if (constraint.dim() != 1)
     throw std::invalid_argument(who + "the constraint must be scalar, got dimension " + std::to_string(constraint.dim()));
@@ -239,14 +291,32 @@ Fn solve(const Fn& constraint, std::span<const int> unknowns, const Box& domain,
   check_search_box(domain, unknowns.size(), "solve operator (domain)");
   if (!(epsilon > 0.0) || !std::isfinite(epsilon))
     throw std::invalid_argument(who + "epsilon must be finite and > 0, got " + std::to_string(epsilon));
-  std::vector<int> free;
+  if (max_solutions < 0) throw std::invalid_argument(who + "max_solutions must be >= 1");
   for (int c : constraint.inputs())
-    if (!(mask & (std::uint64_t{1} << c))) free.push_back(c);
-  auto op = std::make_shared<const SolveOp>(constraint, std::vector<int>(unknowns.begin(), unknowns.end()), free,
-                                            domain, epsilon);
+    if (!(mask & (std::uint64_t{1} << c))) free->push_back(c);
+  return std::make_shared<const SolveOp>(constraint, std::vector<int>(unknowns.begin(), unknowns.end()), *free, domain,
+                                         epsilon, max_solutions);
+}
+
+Fn apply_to_free(const std::shared_ptr<const SolveOp>& op, const std::vector<int>& free) {
   std::vector<Fn> args;
   for (int c : free) args.push_back(x(c));
   return apply_custom(op, args);
+}
+
+}  // namespace
+
+Fn solve(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon) {
+  std::vector<int> free;
+  const auto op = make_solve_op(constraint, unknowns, domain, epsilon, 0, &free);
+  return apply_to_free(op, free);
+}
+
+Fn solve_all(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon, int max_solutions) {
+  if (max_solutions < 1) throw std::invalid_argument("genmod: solve_all: max_solutions must be >= 1");
+  std::vector<int> free;
+  const auto op = make_solve_op(constraint, unknowns, domain, epsilon, max_solutions, &free);
+  return apply_to_free(op, free);
 }
 
 }  // namespace genmod

@@ -51,4 +51,15 @@ namespace genmod {
 // NaN or unbounded side, an epsilon that is not finite and > 0.
 Fn solve(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon);
 
+// GENMOD's "all solutions up to a maximum": 1 + K n components (K = max_solutions >= 1):
+// the number of solutions found (at most K), then K solution points in the order above (NaN
+// where fewer were found). Point values as for solve(); each solution is a separate solution
+// component of the aggregation, so two solutions closer than about epsilon count as one.
+// Inclusion over a parameter box: the count is [number of components certified unique, K] (or
+// the exact number when every component is certified), and every slot holds the hull of all
+// solutions (any of them may come j-th for some parameter value), kMaybeError beyond the
+// certified count. Derivatives: the implicit function theorem at each slot (0 for the count).
+Fn solve_all(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon,
+             int max_solutions);
+
 }  // namespace genmod
