@@ -3,4 +3,5 @@
 
 #include "genmod/kernel/kernel.hpp"
 #include "genmod/operators/operators.hpp"
+#include "genmod/solvers/solvers.hpp"
 #include "genmod/tessellate/tessellate.hpp"

@@ -152,6 +152,37 @@ RayHit ray_hit_implicit(const Fn& f, std::array<double, 3> origin, std::array<do
   return first_hit(r, 0, false);
 }
 
+SurfaceIntersection surface_intersection(const Fn& a, const Fn& b, std::span<const Interval> a_domain,
+                                         std::span<const Interval> b_domain, const ImplicitCurveOptions& options) {
+  if (a.dim() != 3 || b.dim() != 3)
+    throw std::invalid_argument("genmod: surface_intersection: surfaces must have dimension 3, got " +
+                                std::to_string(a.dim()) + " and " + std::to_string(b.dim()));
+  Box box(a_domain.begin(), a_domain.end());
+  if (box.empty()) box.assign(2, Interval(0, 1));
+  check_search_box(box, 2, "surface_intersection (first domain)");
+  Box second(b_domain.begin(), b_domain.end());
+  if (second.empty()) second.assign(2, Interval(0, 1));
+  check_search_box(second, 2, "surface_intersection (second domain)");
+  box.insert(box.end(), second.begin(), second.end());
+  const int uv[] = {0, 1}, st[] = {2, 3};
+  const Fn au = rename_parameters(a, uv, "surface_intersection: the first surface");
+  const Fn bs = rename_parameters(b, st, "surface_intersection: the second surface");
+  const int coords[] = {0, 1, 2, 3};
+  SurfaceIntersection out;
+  out.curve = approximate_implicit_curve(au - bs, coords, box, options);
+  const Tape at(au, std::vector<int>{0, 1});
+  PointEvaluator pe;
+  for (const Polyline& line : out.curve.components) {
+    std::vector<std::array<double, 3>> pts;
+    for (const std::vector<double>& q : line.points) {
+      const auto p = pe.eval(at, {q[0], q[1]});
+      pts.push_back({p[0], p[1], p[2]});
+    }
+    out.components.push_back(std::move(pts));
+  }
+  return out;
+}
+
 ClosestPoint closest_point(const Fn& shape, std::span<const double> p, std::span<const Interval> domain,
                            const QueryOptions& options) {
   if (shape.dim() != p.size())

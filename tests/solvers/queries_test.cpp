@@ -149,6 +149,25 @@ TEST(Queries, ClassifiesPointsAgainstAClosedSurface) {
             PointClass::OnSurface);
 }
 
+TEST(Queries, SphereMeetsPlaneInOneCircle) {
+  // The unit sphere and the plane z = 0.5 (a parametric patch): the circle of radius
+  // sqrt(0.75) at z = 0.5.
+  const Fn plane = cat({4 * x(0) - 2, 4 * x(1) - 2, Fn(0.5)});
+  ImplicitCurveOptions opt;
+  opt.acceptance_width = 0.3;
+  const SurfaceIntersection r = surface_intersection(unit_sphere(), plane, {}, {}, opt);
+  ASSERT_EQ(r.components.size(), 1u);
+  std::size_t points = 0;
+  for (const auto& p : r.components[0]) {
+    EXPECT_NEAR(p[2], 0.5, 1e-7);
+    EXPECT_NEAR(std::hypot(p[0], p[1]), std::sqrt(0.75), 1e-7);
+    ++points;
+  }
+  EXPECT_GT(points, 8u);
+  EXPECT_TRUE(r.complete());
+  EXPECT_THROW(surface_intersection(circle(1.0), plane), std::invalid_argument);
+}
+
 TEST(Queries, BadInputIsNamed) {
   EXPECT_THROW(curve_intersections(circle(1.0), cat({x(0), x(0), x(0)})), std::invalid_argument);
   EXPECT_THROW(curve_intersections(circle(1.0), x(0) * x(1)), std::invalid_argument);

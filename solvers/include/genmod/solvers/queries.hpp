@@ -5,6 +5,7 @@
 //   curve_self_intersections(c)     where a parametric curve crosses itself
 //   ray_hit(surface, origin, dir)   first hit of a ray on a parametric surface
 //   ray_hit_implicit(f, origin, dir) first hit of a ray on an implicit surface f = 0
+//   surface_intersection(a, b)      the curves where two parametric surfaces meet
 //   closest_point(shape, p)         distance from a point to a parametric curve or surface
 //   classify_point(surface, p)      inside / outside a closed parametric surface
 //
@@ -22,6 +23,7 @@
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/interval.hpp"
 #include "genmod/solvers/box.hpp"
+#include "genmod/solvers/implicit_curve.hpp"
 #include "genmod/solvers/limits.hpp"
 
 #include <array>
@@ -75,6 +77,20 @@ RayHit ray_hit(const Fn& surface, std::array<double, 3> origin, std::array<doubl
 // First hit of the ray on the implicit surface f(x, y, z) = 0 (f over x(0), x(1), x(2)).
 RayHit ray_hit_implicit(const Fn& f, std::array<double, 3> origin, std::array<double, 3> direction, double t_max,
                         const QueryOptions& options = {});
+
+struct SurfaceIntersection {
+  // The solution curve of a(u, v) = b(s, t) in (u, v, s, t) (Algorithm 5.3 in 4-D).
+  ImplicitCurve curve;
+  // Each component's points in space (the first surface at its (u, v)), in curve order.
+  std::vector<std::vector<std::array<double, 3>>> components;
+  bool complete() const noexcept { return curve.complete(); }
+};
+
+// Intersection curves of the parametric surfaces a(u, v) and b(s, t) (dimension 3) over
+// their parameter boxes (default [0,1]^2 each).
+SurfaceIntersection surface_intersection(const Fn& a, const Fn& b, std::span<const Interval> a_domain = {},
+                                         std::span<const Interval> b_domain = {},
+                                         const ImplicitCurveOptions& options = {});
 
 struct ClosestPoint {
   Interval distance;                 // guaranteed bracket of the distance
