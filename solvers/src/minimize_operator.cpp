@@ -8,6 +8,7 @@
 #include "genmod/kernel/tape.hpp"
 #include "genmod/solvers/constraint_solver.hpp"
 #include "genmod/solvers/minimizer.hpp"
+#include "implicit_partials.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -37,6 +38,11 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
     objective_tape_ = std::make_shared<const Tape>(objective_, inputs_);
     constraint_tape_ = std::make_shared<const Tape>(constraint_, inputs_);
     for (int p : free_) envelope_.push_back(genmod::derivative(objective_, p));
+    // The minimizer's derivative: the implicit function theorem on grad_x f = 0 (an interior
+    // minimum or inactive constraints).
+    std::vector<Fn> gradient;
+    for (int u : unknowns_) gradient.push_back(genmod::derivative(objective_, u));
+    minimizer_partials_ = detail::implicit_partials(gradient, unknowns_, free_);
     const std::uint64_t used = objective_.input_mask() | constraint_.input_mask();
     for (int i = kMaxInputs - 1; i >= 0 && scratch_ < 0; --i)
       if (!(used & (std::uint64_t{1} << i))) scratch_ = i;
@@ -137,7 +143,13 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
     std::vector<Fn> at;
     for (std::size_t j = 0; j < n; ++j) at.push_back(r[j]);
     at.insert(at.end(), args.begin(), args.end());
-    std::vector<Fn> d(n, Fn(kNaN));  // the minimizer's derivative is not implemented
+    std::vector<Fn> d;
+    if (minimizer_partials_.empty()) {
+      d.assign(n, Fn(kNaN));  // n > detail::kMaxImplicitSize
+    } else {
+      const Fn dx = compose_all(minimizer_partials_.at(static_cast<std::size_t>(k)), inputs_, cat(at));
+      for (std::size_t j = 0; j < n; ++j) d.push_back(dx[j]);
+    }
     d.push_back(compose_all(envelope_.at(static_cast<std::size_t>(k)), inputs_, cat(at)));
     return cat(d);
   }
@@ -157,6 +169,7 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
   double epsilon_;
   std::shared_ptr<const Tape> objective_tape_, constraint_tape_;
   std::vector<Fn> envelope_;  // df/d free_k over inputs_
+  std::vector<Fn> minimizer_partials_;  // dx*/d free_k (dimension n) over inputs_
   int scratch_ = -1;          // a coordinate holding the level U in level_set_
   Fn level_set_;              // objective <= x(scratch_) && constraint
 };

@@ -8,6 +8,7 @@
 #include "genmod/kernel/tape.hpp"
 #include "genmod/solvers/constraint_solver.hpp"
 #include "genmod/solvers/constraint_system.hpp"
+#include "implicit_partials.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -22,23 +23,6 @@ namespace genmod {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr std::size_t kMaxCramer = 4;
-
-// Determinant of the n x n matrix m (row major) by cofactor expansion along the first row.
-Fn determinant(const std::vector<Fn>& m, std::size_t n) {
-  if (n == 1) return m[0];
-  if (n == 2) return m[0] * m[3] - m[1] * m[2];
-  Fn det(0.0);
-  for (std::size_t j = 0; j < n; ++j) {
-    std::vector<Fn> minor;
-    for (std::size_t r = 1; r < n; ++r)
-      for (std::size_t c = 0; c < n; ++c)
-        if (c != j) minor.push_back(m[r * n + c]);
-    const Fn term = m[j] * determinant(minor, n - 1);
-    det = (j % 2 == 0) ? det + term : det - term;
-  }
-  return det;
-}
 
 // Solves a x = b (n x n, row major) by Gaussian elimination with partial pivoting; false if
 // singular.
@@ -94,20 +78,7 @@ class SolveOp : public CustomOp, public std::enable_shared_from_this<SolveOp> {
       for (int u : unknowns_) jx.push_back(genmod::derivative(h, u));
     parts.insert(parts.end(), jx.begin(), jx.end());
     newton_ = std::make_shared<const Tape>(cat(parts), inputs_);
-    if (n > kMaxCramer) return;
-    // dR_j/dp_k = -det(J_x with column j replaced by dh/dp_k) / det(J_x).
-    const Fn det = determinant(jx, n);
-    for (int p : free_) {
-      std::vector<Fn> col;
-      for (const Fn& h : eqs) col.push_back(genmod::derivative(h, p));
-      std::vector<Fn> dk;
-      for (std::size_t j = 0; j < n; ++j) {
-        std::vector<Fn> m = jx;
-        for (std::size_t i = 0; i < n; ++i) m[i * n + j] = col[i];
-        dk.push_back(-determinant(m, n) / det);
-      }
-      partials_.push_back(cat(dk));
-    }
+    partials_ = detail::implicit_partials(eqs, unknowns_, free_);
   }
 
   std::string name() const override { return max_solutions_ ? "solve-all" : "solve"; }

@@ -47,6 +47,24 @@ TEST(MinimizeOperator, EnvelopeDerivativeOfTheMinimumValue) {
   EXPECT_TRUE(std::isnan(at(derivative(m, 1), {0, 0.3})));
 }
 
+// The minimizer's derivative by the implicit function theorem on grad f = 0.
+TEST(MinimizeOperator, MinimizerDerivative) {
+  const int unknowns[] = {0, 1};
+  // (x0 - sin p)^2 + (2 x1 - p^2)^2 has the minimizer (sin p, p^2 / 2).
+  const Fn p = x(2);
+  const Fn f = square(x(0) - sin(p)) + square(2 * x(1) - square(p));
+  const Fn m = minimize(f, Fn(1.0), unknowns, {Interval(-2, 2), Interval(-2, 2)}, 1e-9);
+  const Fn dm = derivative(m, 2);
+  for (double q : {-0.7, 0.3, 1.1}) {
+    const auto v = evaluate(m, std::vector<double>{0, 0, q});
+    EXPECT_NEAR(v[0], std::sin(q), 1e-6);
+    EXPECT_NEAR(v[1], q * q / 2, 1e-6);
+    const auto d = evaluate(dm, std::vector<double>{0, 0, q});
+    EXPECT_NEAR(d[0], std::cos(q), 1e-5);
+    EXPECT_NEAR(d[1], q, 1e-5);
+  }
+}
+
 TEST(MinimizeOperator, InclusionContainsSampledValues) {
   const Fn v = minimum_value(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
   const Fn m = minimize(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);

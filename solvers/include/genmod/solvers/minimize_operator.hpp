@@ -28,9 +28,10 @@
 // the hull of those boxes widened by epsilon, always with kMaybeError (a point value may fail
 // to be verified).
 //
-// Derivatives: the minimum value by the envelope theorem, df*/dp = (df/dp)(x*(p), p), valid for
-// unconstrained minima or inactive constraints. The minimizer point's derivative (implicit
-// function theorem on grad f = 0) is not implemented: it is NaN.
+// Derivatives (valid for interior minima, or where the constraints are inactive): the minimum
+// value by the envelope theorem, df*/dp = (df/dp)(x*(p), p); the minimizer point by the
+// implicit function theorem on grad_x f = 0, dx*/dp = -H_xx^{-1} H_xp (Cramer's rule, n <= 4;
+// NaN for larger n or a singular Hessian).
 #pragma once
 
 #include "genmod/kernel/fn.hpp"
