@@ -6,6 +6,7 @@
 #include "genmod/kernel/custom_op.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
+#include "genmod/solvers/aggregation.hpp"
 #include "genmod/solvers/constraint_solver.hpp"
 #include "genmod/solvers/minimizer.hpp"
 #include "implicit_partials.hpp"
@@ -26,13 +27,17 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 class MinimizeOp : public CustomOp, public std::enable_shared_from_this<MinimizeOp> {
  public:
-  MinimizeOp(Fn objective, Fn constraint, std::vector<int> unknowns, std::vector<int> free, Box domain, double epsilon)
+  // max_solutions == 0: the minimizer and the minimum value (n + 1 outputs); K > 0: the number
+  // of minimizers found (at most K), K minimizer points, then the minimum value (2 + K n).
+  MinimizeOp(Fn objective, Fn constraint, std::vector<int> unknowns, std::vector<int> free, Box domain, double epsilon,
+             int max_solutions)
       : objective_(std::move(objective)),
         constraint_(std::move(constraint)),
         unknowns_(std::move(unknowns)),
         free_(std::move(free)),
         domain_(std::move(domain)),
-        epsilon_(epsilon) {
+        epsilon_(epsilon),
+        max_solutions_(max_solutions) {
     inputs_ = unknowns_;
     inputs_.insert(inputs_.end(), free_.begin(), free_.end());
     objective_tape_ = std::make_shared<const Tape>(objective_, inputs_);
@@ -49,9 +54,9 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
     if (scratch_ >= 0) level_set_ = (objective_ <= x(scratch_)) && constraint_;
   }
 
-  std::string name() const override { return "minimize"; }
+  std::string name() const override { return max_solutions_ ? "minimize-all" : "minimize"; }
   int num_args() const override { return static_cast<int>(free_.size()); }
-  int num_outputs() const override { return static_cast<int>(unknowns_.size()) + 1; }
+  int num_outputs() const override { return static_cast<int>(slots() * unknowns_.size() + first_slot() + 1); }
 
   void eval(std::span<const double> args, std::span<double> out) const override {
     std::fill(out.begin(), out.end(), kNaN);
@@ -63,8 +68,26 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
     const MinimizeResult r = genmod::minimize(objective_, constraint_, inputs_, box, options());
     const std::size_t n = unknowns_.size();
     if (r.infeasible || !r.feasible_found || !(r.minimum.width() <= epsilon_)) return;
-    std::copy(r.best_point.begin(), r.best_point.begin() + static_cast<std::ptrdiff_t>(n), out.begin());
-    out[n] = r.minimum.mid();
+    out[value_index()] = r.minimum.mid();
+    if (!max_solutions_) {
+      std::copy(r.best_point.begin(), r.best_point.begin() + static_cast<std::ptrdiff_t>(n), out.begin());
+      return;
+    }
+    // Every minimizer lies in the candidates; each connected group of them is one minimizer
+    // (up to epsilon), in lexicographic order of the groups' lower corners.
+    std::vector<Box> xs;
+    for (const Box& c : r.candidates) xs.emplace_back(c.begin(), c.begin() + static_cast<std::ptrdiff_t>(n));
+    std::vector<Aggregate> groups = aggregate(xs, epsilon_);
+    std::sort(groups.begin(), groups.end(), [](const Aggregate& a, const Aggregate& b) {
+      return std::lexicographical_compare(a.hull.begin(), a.hull.end(), b.hull.begin(), b.hull.end(),
+                                          [](const Interval& u, const Interval& v) { return u.lo() < v.lo(); });
+    });
+    const std::size_t count = std::min(groups.size(), slots());
+    out[0] = static_cast<double>(count);
+    for (std::size_t j = 0; j < count; ++j) {
+      const std::vector<double> m = midpoint(groups[j].hull);
+      std::copy(m.begin(), m.end(), out.begin() + static_cast<std::ptrdiff_t>(1 + j * n));
+    }
   }
 
   void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override {
@@ -81,8 +104,10 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
     IntervalEvaluator ev;
     for (const Interval& a : args) {
       if (!a.is_bounded()) {  // the objective's natural bound; the minimizer lies in the domain
-        std::copy(domain_.begin(), domain_.end(), out.begin());
-        out[n] = ev.eval(*objective_tape_, box)[0];
+        for (std::size_t j = 0; j < slots(); ++j)
+          std::copy(domain_.begin(), domain_.end(), out.begin() + static_cast<std::ptrdiff_t>(first_slot() + j * n));
+        if (max_solutions_) out[0] = Interval(0.0, static_cast<double>(slots()));
+        out[value_index()] = ev.eval(*objective_tape_, box)[0];
         for (auto& e : err) e |= kMaybeError;
         return;
       }
@@ -113,48 +138,65 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
       }
     }
     const Interval value = Interval::unchecked(r.minimum.lo(), std::max(upper, r.minimum.lo()));
-    out[n] = value + margin;
-    if (!everywhere) err[n] |= kMaybeError;
+    const std::size_t vi = value_index();
+    out[vi] = value + margin;
+    if (!everywhere) err[vi] |= kMaybeError;
+    if (max_solutions_) {  // the count is not certified by the minimizer
+      out[0] = Interval(0.0, static_cast<double>(slots()));
+      err[0] |= kMaybeError;
+    }
     // Minimizer point: a point value q at p is feasible with f(q, p) <= f*(p) + delta <= U, so
     // it lies in a box the constraint solver returns for f(x, p) <= U && constraint, p in P.
-    for (std::size_t k = 0; k < n; ++k) {
-      out[k] = domain_[k];
-      err[k] |= kMaybeError;
-    }
-    if (!std::isfinite(out[n].hi()) || scratch_ < 0) return;
+    for (std::size_t j = 0; j < slots(); ++j)
+      for (std::size_t k = 0; k < n; ++k) {
+        out[first_slot() + j * n + k] = domain_[k];
+        err[first_slot() + j * n + k] |= kMaybeError;
+      }
+    if (!std::isfinite(out[vi].hi()) || scratch_ < 0) return;
     SolveOptions sopt;
     sopt.epsilon = opt.epsilon;
     sopt.threads = 1;
     sopt.limits.max_boxes = 20000;
     FreeParameters params{free_, Box(args.begin(), args.end())};
     params.coords.push_back(scratch_);
-    params.values.emplace_back(out[n].hi());
+    params.values.emplace_back(out[vi].hi());
     const SolveResult s = genmod::solve(level_set_, unknowns_, domain_, sopt, params);
     for (std::size_t k = 0; k < n; ++k) {
       Interval h = Interval::empty();
       for (const SolutionBox& b : s.boxes) h = hull(h, b.box[k]);
-      out[k] = h.is_empty() ? Interval::empty() : intersect(h + margin, domain_[k]);
+      const Interval slot = h.is_empty() ? Interval::empty() : intersect(h + margin, domain_[k]);
+      for (std::size_t j = 0; j < slots(); ++j) out[first_slot() + j * n + k] = slot;
     }
   }
 
   Fn derivative(std::span<const Fn> args, int k) const override {
     const std::size_t n = unknowns_.size();
     const Fn r = apply_custom(shared_from_this(), args);
-    std::vector<Fn> at;
-    for (std::size_t j = 0; j < n; ++j) at.push_back(r[j]);
+    std::vector<Fn> at;  // the first minimizer and the free coordinates (for the envelope)
+    for (std::size_t j = 0; j < n; ++j) at.push_back(r[first_slot() + j]);
     at.insert(at.end(), args.begin(), args.end());
     std::vector<Fn> d;
-    if (minimizer_partials_.empty()) {
-      d.assign(n, Fn(kNaN));  // n > detail::kMaxImplicitSize
-    } else {
-      const Fn dx = compose_all(minimizer_partials_.at(static_cast<std::size_t>(k)), inputs_, cat(at));
-      for (std::size_t j = 0; j < n; ++j) d.push_back(dx[j]);
+    if (max_solutions_) d.push_back(Fn(0.0));  // the count is piecewise constant
+    for (std::size_t j = 0; j < slots(); ++j) {
+      if (minimizer_partials_.empty()) {  // n > detail::kMaxImplicitSize
+        for (std::size_t i = 0; i < n; ++i) d.push_back(Fn(kNaN));
+        continue;
+      }
+      std::vector<Fn> at_j;
+      for (std::size_t i = 0; i < n; ++i) at_j.push_back(r[first_slot() + j * n + i]);
+      at_j.insert(at_j.end(), args.begin(), args.end());
+      const Fn dx = compose_all(minimizer_partials_.at(static_cast<std::size_t>(k)), inputs_, cat(at_j));
+      for (std::size_t i = 0; i < n; ++i) d.push_back(dx[i]);
     }
     d.push_back(compose_all(envelope_.at(static_cast<std::size_t>(k)), inputs_, cat(at)));
     return cat(d);
   }
 
  private:
+  std::size_t slots() const noexcept { return max_solutions_ ? static_cast<std::size_t>(max_solutions_) : 1; }
+  std::size_t first_slot() const noexcept { return max_solutions_ ? 1 : 0; }
+  std::size_t value_index() const noexcept { return first_slot() + slots() * unknowns_.size(); }
+
   MinimizeOptions options() const {
     MinimizeOptions opt;
     opt.epsilon = epsilon_;
@@ -167,6 +209,7 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
   std::vector<int> inputs_;  // unknowns then free coordinates
   Box domain_;
   double epsilon_;
+  int max_solutions_ = 0;
   std::shared_ptr<const Tape> objective_tape_, constraint_tape_;
   std::vector<Fn> envelope_;  // df/d free_k over inputs_
   std::vector<Fn> minimizer_partials_;  // dx*/d free_k (dimension n) over inputs_
@@ -174,7 +217,8 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
   Fn level_set_;              // objective <= x(scratch_) && constraint
 };
 
-Fn make(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon) {
+Fn make(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon,
+        int max_solutions) {
   const std::string who = "genmod: minimize operator: ";
   if (objective.dim() != 1)
     throw std::invalid_argument(who + "the objective must be scalar, got dimension " + std::to_string(objective.dim()));
@@ -196,7 +240,7 @@ Fn make(const Fn& objective, const Fn& constraint, std::span<const int> unknowns
   for (int c = 0; c < kMaxInputs; ++c)
     if ((used & (std::uint64_t{1} << c)) && !(mask & (std::uint64_t{1} << c))) free.push_back(c);
   auto op = std::make_shared<const MinimizeOp>(objective, constraint, std::vector<int>(unknowns.begin(), unknowns.end()),
-                                               free, domain, epsilon);
+                                               free, domain, epsilon, max_solutions);
   std::vector<Fn> args;
   for (int c : free) args.push_back(x(c));
   return apply_custom(op, args);
@@ -206,7 +250,7 @@ Fn make(const Fn& objective, const Fn& constraint, std::span<const int> unknowns
 
 Fn minimize(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
             double epsilon) {
-  const Fn all = make(objective, constraint, unknowns, domain, epsilon);
+  const Fn all = make(objective, constraint, unknowns, domain, epsilon, 0);
   std::vector<Fn> point;
   for (std::size_t k = 0; k < unknowns.size(); ++k) point.push_back(all[k]);
   return cat(point);
@@ -214,7 +258,16 @@ Fn minimize(const Fn& objective, const Fn& constraint, std::span<const int> unkn
 
 Fn minimum_value(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
                  double epsilon) {
-  return make(objective, constraint, unknowns, domain, epsilon)[unknowns.size()];
+  return make(objective, constraint, unknowns, domain, epsilon, 0)[unknowns.size()];
+}
+
+Fn minimize_all(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+                double epsilon, int max_solutions) {
+  if (max_solutions < 1) throw std::invalid_argument("genmod: minimize_all: max_solutions must be >= 1");
+  const Fn all = make(objective, constraint, unknowns, domain, epsilon, max_solutions);
+  std::vector<Fn> out;
+  for (std::size_t k = 0; k + 1 < all.dim(); ++k) out.push_back(all[k]);  // without the value
+  return cat(out);
 }
 
 }  // namespace genmod

@@ -42,9 +42,9 @@ TEST(MinimizeOperator, EnvelopeDerivativeOfTheMinimumValue) {
     EXPECT_NEAR(at(d, {0, p}), 2 * p, 1e-3) << p;
     EXPECT_NEAR(at(d, {0, p}), (at(v, {0, p + h}) - at(v, {0, p - h})) / (2 * h), 1e-3) << p;
   }
-  // The minimizer's derivative is documented as not implemented (NaN).
+  // The minimizer x0 = x1 has derivative 1 (implicit function theorem on grad f = 0).
   const Fn m = minimize(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
-  EXPECT_TRUE(std::isnan(at(derivative(m, 1), {0, 0.3})));
+  EXPECT_NEAR(at(derivative(m, 1), {0, 0.3}), 1.0, 1e-9);
 }
 
 // The minimizer's derivative by the implicit function theorem on grad f = 0.
@@ -63,6 +63,26 @@ TEST(MinimizeOperator, MinimizerDerivative) {
     EXPECT_NEAR(d[0], std::cos(q), 1e-5);
     EXPECT_NEAR(d[1], q, 1e-5);
   }
+}
+
+// All global minimizers up to a maximum: (x^2 - p)^2 has two, -sqrt p and sqrt p.
+TEST(MinimizeOperator, AllMinimizersUpToAMaximum) {
+  const int unknowns[] = {0};
+  const Fn f = square(square(x(0)) - x(1));
+  const Fn all = minimize_all(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-7, 3);
+  ASSERT_EQ(all.dim(), 4u);
+  const Fn d = derivative(all, 1);
+  for (double p : {0.5, 1.5}) {
+    const auto v = evaluate(all, std::vector<double>{0, p});
+    EXPECT_EQ(v[0], 2.0);
+    EXPECT_NEAR(v[1], -std::sqrt(p), 1e-5);
+    EXPECT_NEAR(v[2], std::sqrt(p), 1e-5);
+    EXPECT_TRUE(std::isnan(v[3]));
+    const auto dv = evaluate(d, std::vector<double>{0, p});
+    EXPECT_NEAR(dv[1], -0.5 / std::sqrt(p), 1e-3);
+    EXPECT_NEAR(dv[2], 0.5 / std::sqrt(p), 1e-3);
+  }
+  EXPECT_THROW(minimize_all(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-7, 0), std::invalid_argument);
 }
 
 TEST(MinimizeOperator, InclusionContainsSampledValues) {

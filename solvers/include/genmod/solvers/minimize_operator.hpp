@@ -48,6 +48,14 @@ namespace genmod {
 Fn minimize(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
             double epsilon);
 
+// GENMOD's "all solutions up to a maximum" form: 1 + K n components (K = max_solutions >= 1):
+// the number of global minimizers found (at most K; minimizers closer than about epsilon count
+// as one), then K minimizer points in lexicographic order (NaN where fewer). Inclusions: every
+// slot holds the hull of all near-minimal feasible points, and the count is [0, K] with
+// kMaybeError (the minimizer does not certify counts). Derivatives per slot as for minimize().
+Fn minimize_all(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+                double epsilon, int max_solutions);
+
 // The minimum value (scalar); same arguments and errors as minimize().
 Fn minimum_value(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
                  double epsilon);
