@@ -378,7 +378,13 @@ SolveResult solve(const Fn& constraint, std::span<const int> unknowns, const Box
   work.push(Item{box, std::vector<std::uint8_t>(problem.sys.num_atoms(), kTagUnknown), 0,
                  unknowns.size() - 1});
   std::optional<tbb::task_arena> arena;
-  if (options.threads != 1) arena.emplace(options.threads == 0 ? tbb::task_arena::automatic : options.threads);
+  if (options.threads != 1) {
+    // (Not a conditional expression: that would bind a reference to task_arena::automatic,
+    // which oneTBB declares but does not define out of line.)
+    int concurrency = options.threads;
+    if (concurrency == 0) concurrency = tbb::task_arena::automatic;
+    arena.emplace(concurrency);
+  }
   tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(problem); });
   std::vector<Item> batch;
   std::vector<Outcome> outcomes;
