@@ -7,6 +7,8 @@
 #include "genmod/operators/higher_order.hpp"
 #include "genmod/operators/integrate.hpp"
 #include "genmod/operators/matrix.hpp"
+#include "genmod/operators/shapes.hpp"
+#include "genmod/operators/sweep.hpp"
 #include "genmod/operators/table.hpp"
 #include "genmod/operators/transform.hpp"
 #include "genmod/operators/vector.hpp"

@@ -2,5 +2,7 @@
 #pragma once
 
 #include "genmod/tessellate/image.hpp"
+#include "genmod/tessellate/lattice.hpp"
+#include "genmod/tessellate/mesh.hpp"
 #include "genmod/tessellate/png_io.hpp"
 #include "genmod/tessellate/raster2d.hpp"
