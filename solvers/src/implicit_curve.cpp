@@ -290,6 +290,13 @@ bool CurveBuilder::process(const Work& w, const std::vector<int>& candidates, st
     if (!sortable) continue;
     std::vector<Link> found;
     bool ok = true;
+    // Heuristic test, step 5: the hyperplane through each inner boundary point meets the curve
+    // only there, so no point before it can connect to one after it.
+    if (opt_.parameterizability == ImplicitCurveOptions::Test::Heuristic)
+      for (std::size_t i = 1; i + 1 < pts.size() && ok; ++i) {
+        std::vector<double> unused;
+        ok = solve_slice(Y, kk, pts[i].second[kk].mid(), unused) == SliceAnswer::Link;
+      }
     for (std::size_t i = 0; i + 1 < pts.size() && ok; ++i) {
       const double c = 0.5 * (pts[i].second[kk].hi() + pts[i + 1].second[kk].lo());
       std::vector<double> sample;
@@ -337,10 +344,11 @@ ImplicitCurve CurveBuilder::run() {
       }
       continue;
     }
-    std::vector<int> candidates;  // Step 2 (Theorem 5.5)
-    if (jac.size() == (n_ - 1) * n_)
+    std::vector<int> candidates;  // Step 2: Theorem 5.5, or every coordinate for the heuristic test
+    const bool heuristic = opt_.parameterizability == ImplicitCurveOptions::Test::Heuristic;
+    if (heuristic || jac.size() == (n_ - 1) * n_)
       for (std::size_t k = 0; k < n_; ++k)
-        if (jacobian_minor_regular(jac, n_ - 1, k)) candidates.push_back(static_cast<int>(k));
+        if (heuristic || jacobian_minor_regular(jac, n_ - 1, k)) candidates.push_back(static_cast<int>(k));
     int param = -1;
     if (candidates.empty() || !process(w, candidates, links, param)) {
       split_or_unresolved(w, work);

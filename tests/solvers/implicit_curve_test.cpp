@@ -194,6 +194,35 @@ TEST(ImplicitCurve, Claim33Fig57) {
   EXPECT_GE(counts[0], 3u);         // several components (closed loops and boundary arcs)
 }
 
+// The heuristic parameterizability test (section 5.2.4) finds the same components with
+// fewer proximate boxes, and every point of the curve is still covered.
+TEST(ImplicitCurve, HeuristicTestAgreesWithTheRobustOne) {
+  const Fn f = fig57();
+  const Box Xb = {Interval(-1.1, 1.1), Interval(-1.1, 1.1)};
+  ImplicitCurveOptions robust_opt;
+  robust_opt.acceptance_width = 0.19;
+  ImplicitCurveOptions heuristic_opt = robust_opt;
+  heuristic_opt.parameterizability = ImplicitCurveOptions::Test::Heuristic;
+  const ImplicitCurve robust = approximate_implicit_curve(f, kXY, Xb, robust_opt);
+  const ImplicitCurve heuristic = approximate_implicit_curve(f, kXY, Xb, heuristic_opt);
+  expect_well_formed(heuristic);
+  EXPECT_EQ(heuristic.components.size(), robust.components.size());
+  EXPECT_LE(heuristic.stats.proximate, robust.stats.proximate);
+  EXPECT_LE(max_residual(f, kXY, heuristic), 1e-7);
+  for (int i = 0; i <= 110; ++i) {
+    const double s = -1.1 + 2.2 * i / 110;
+    for (double r : scan_roots([&](double t) { return fig57(t, s); }, -1.1, 1.1, 4000)) {
+      const double p[] = {r, s};
+      EXPECT_TRUE(covered(heuristic, p, 1e-9)) << r << " " << s;
+    }
+  }
+  // The circle: one closed list.
+  const Fn circle = square(x(0)) + square(x(1)) - 0.5;
+  const ImplicitCurve c = approximate_implicit_curve(circle, kXY, {Interval(-1, 1), Interval(-1, 1)}, heuristic_opt);
+  ASSERT_EQ(c.components.size(), 1u);
+  EXPECT_TRUE(c.components[0].closed);
+}
+
 // Claim 34, the non-periodic form: on u in [0,1], v in [-0.25, 0.75] the silhouette is exactly
 // 2 open segments, each from u = 0 to u = 1 with the same v at both ends.
 TEST(ImplicitCurve, Claim34TorusSilhouetteOpenSegments) {

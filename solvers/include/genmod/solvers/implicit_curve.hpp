@@ -75,6 +75,15 @@ struct ImplicitCurveOptions {
   std::vector<int> periodic;
   // Keep the slice points of step 5 as extra samples between two face points.
   bool slice_samples = true;
+  // Which global parameterizability test accepts a narrow box (snyder.md 5.2.3 / 5.2.4):
+  //  * Robust (Theorem 5.5): a Jacobian minor is regular over the box; then every slice in that
+  //    coordinate holds at most one curve point. Never misses a component.
+  //  * Heuristic: the box's boundary points are sortable in some coordinate and, when there are
+  //    more than two, the hyperplane through each inner one meets the curve exactly once
+  //    (boundary univalence). Accepts larger boxes (fewer face solves) and works where the
+  //    robust test cannot (non-C^1 or singular Jacobians), but assumes that no closed component
+  //    lies entirely inside one box: a loop smaller than the acceptance width may be missed.
+  enum class Test : std::uint8_t { Robust, Heuristic } parameterizability = Test::Robust;
   // Limits of the whole run: max_boxes counts boxes of the subdivision (face and slice solves
   // get their own small budgets), max_depth the bisections along one path, time in seconds.
   SearchLimits limits;
