@@ -1,5 +1,7 @@
 #include "genmod/solvers/aggregation.hpp"
 
+#include "union_find.hpp"
+
 #include <algorithm>
 #include <numeric>
 #include <stdexcept>
@@ -9,19 +11,7 @@ namespace genmod {
 
 namespace {
 
-struct UnionFind {
-  std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t{0}); }
-  std::size_t find(std::size_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // the smallest index is the root
-  }
-};
+using detail::UnionFind;
 
 }  // namespace
 

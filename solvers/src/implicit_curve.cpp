@@ -1,9 +1,13 @@
 // Algorithm 5.3, implicit curve approximation (snyder.md section 5.2). See implicit_curve.hpp.
 #include "genmod/solvers/implicit_curve.hpp"
 
+#include "genmod/solvers/aggregation.hpp"
+
 #include "genmod/kernel/inclusion.hpp"
 #include "genmod/solvers/constraint_solver.hpp"
 #include "genmod/solvers/interval_newton.hpp"
+
+#include "union_find.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -40,29 +44,13 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Boxes closer than tol in every side: one point. Boxes of one true point always overlap (each
-// holds it); tol also merges a crossing found at distance ~ rounding from a kd-tree corner on
-// two faces (the curve then cuts the corner through a piece of length ~ 1e-16 that no slice
-// solve can certify).
-bool boxes_overlap(const Box& a, const Box& b, double tol) {
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (!(a[i].lo() - tol <= b[i].hi() && b[i].lo() - tol <= a[i].hi())) return false;
-  return true;
-}
+// Boxes closer than tol in every side are one point (aggregation's touches()). Boxes of one
+// true point always overlap (each holds it); tol also merges a crossing found at distance ~
+// rounding from a kd-tree corner on two faces (the curve then cuts the corner through a piece
+// of length ~ 1e-16 that no slice solve can certify).
+bool boxes_overlap(const Box& a, const Box& b, double tol) { return touches(a, b, tol); }
 
-struct UnionFind {
-  std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), std::size_t{0}); }
-  std::size_t find(std::size_t a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);  // deterministic root: the smallest index
-  }
-};
+using detail::UnionFind;
 
 // Unions overlapping boxes (sweep over the lower bound of side 0).
 void unite_overlapping(const std::vector<Box>& boxes, std::span<const std::size_t> ids, double tol, UnionFind& uf) {

@@ -10,6 +10,7 @@
 #include "genmod/solvers/constraint_solver.hpp"
 #include "genmod/solvers/minimizer.hpp"
 #include "implicit_partials.hpp"
+#include "operator_arguments.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -224,14 +225,7 @@ Fn make(const Fn& objective, const Fn& constraint, std::span<const int> unknowns
     throw std::invalid_argument(who + "the objective must be scalar, got dimension " + std::to_string(objective.dim()));
   if (constraint.dim() != 1)
     throw std::invalid_argument(who + "the constraint must be scalar, got dimension " + std::to_string(constraint.dim()));
-  if (unknowns.empty()) throw std::invalid_argument(who + "no unknowns");
-  std::uint64_t mask = 0;
-  for (int u : unknowns) {
-    if (u < 0 || u >= kMaxInputs)
-      throw std::invalid_argument(who + "unknown " + std::to_string(u) + " is outside [0, " + std::to_string(kMaxInputs) + ")");
-    if (mask & (std::uint64_t{1} << u)) throw std::invalid_argument(who + "unknown x(" + std::to_string(u) + ") is listed twice");
-    mask |= std::uint64_t{1} << u;
-  }
+  const std::uint64_t mask = detail::unknowns_mask(unknowns, who);
   check_search_box(domain, unknowns.size(), "minimize operator (domain)");
   if (!(epsilon > 0.0) || !std::isfinite(epsilon))
     throw std::invalid_argument(who + "epsilon must be finite and > 0, got " + std::to_string(epsilon));

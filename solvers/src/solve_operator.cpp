@@ -9,6 +9,7 @@
 #include "genmod/solvers/constraint_solver.hpp"
 #include "genmod/solvers/constraint_system.hpp"
 #include "implicit_partials.hpp"
+#include "operator_arguments.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -251,14 +252,7 @@ std::shared_ptr<const SolveOp> make_solve_op(const Fn& constraint, std::span<con
   const std::string who = "genmod: solve operator: ";
   if (constraint.dim() != 1)
     throw std::invalid_argument(who + "the constraint must be scalar, got dimension " + std::to_string(constraint.dim()));
-  if (unknowns.empty()) throw std::invalid_argument(who + "no unknowns");
-  std::uint64_t mask = 0;
-  for (int u : unknowns) {
-    if (u < 0 || u >= kMaxInputs)
-      throw std::invalid_argument(who + "unknown " + std::to_string(u) + " is outside [0, " + std::to_string(kMaxInputs) + ")");
-    if (mask & (std::uint64_t{1} << u)) throw std::invalid_argument(who + "unknown x(" + std::to_string(u) + ") is listed twice");
-    mask |= std::uint64_t{1} << u;
-  }
+  const std::uint64_t mask = detail::unknowns_mask(unknowns, who);
   check_search_box(domain, unknowns.size(), "solve operator (domain)");
   if (!(epsilon > 0.0) || !std::isfinite(epsilon))
     throw std::invalid_argument(who + "epsilon must be finite and > 0, got " + std::to_string(epsilon));
