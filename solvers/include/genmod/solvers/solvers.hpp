@@ -2,6 +2,7 @@
 #pragma once
 
 #include "genmod/solvers/aggregation.hpp"
+#include "genmod/solvers/arclength.hpp"
 #include "genmod/solvers/box.hpp"
 #include "genmod/solvers/constraint_solver.hpp"
 #include "genmod/solvers/contractor.hpp"
