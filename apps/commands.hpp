@@ -25,5 +25,7 @@ struct Command {
 
 extern const Command kRenderCommand;
 extern const Command kInfoCommand;
+extern const Command kListCommand;
+extern const Command kMeshCommand;
 
 }  // namespace genmod::app

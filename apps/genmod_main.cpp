@@ -10,7 +10,7 @@
 namespace genmod::app {
 namespace {
 
-constexpr std::array<const Command*, 2> kCommands{&kRenderCommand, &kInfoCommand};
+constexpr std::array<const Command*, 4> kCommands{&kRenderCommand, &kInfoCommand, &kListCommand, &kMeshCommand};
 
 bool is_help(const std::string& s) { return s == "--help" || s == "-h" || s == "help"; }
 

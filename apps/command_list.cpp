@@ -1,0 +1,25 @@
+// genmod list: the models of the gallery with their parameters and defaults.
+#include "commands.hpp"
+
+#include "genmod/models/gallery.hpp"
+
+#include <cstdio>
+
+namespace genmod::app {
+namespace {
+
+int run_list(std::span<const std::string> args) {
+  if (!args.empty()) throw UsageError("unexpected argument '" + args[0] + "'");
+  for (const models::Model& m : models::gallery()) {
+    std::printf("%s\n  %s\n", m.name.c_str(), m.description.c_str());
+    for (const models::ModelParameter& p : m.parameters)
+      std::printf("    %-14s %-8g %s\n", p.name.c_str(), p.value, p.doc.c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+const Command kListCommand{"list", "", "list the gallery models with their parameters and defaults", "", run_list};
+
+}  // namespace genmod::app

@@ -1,0 +1,80 @@
+// The model gallery: named parametric surfaces with documented parameters.
+//
+// Thesis models (research/snyder.md section 7) are built the way the thesis builds them, as
+// profile products (sweep.hpp) of authored substitute curves (the original .crv files are
+// lost): doorknob (7.2), patio_tile (7.3), lamp_stand (7.4). Standard shapes: sphere, torus.
+// Every model is a 3-D surface of (u, v) = (x(0), x(1)) over its domain.
+//
+//   const Model& m = find_model("doorknob");
+//   Fn s = build_model(m, {{"bulge_radius", 0.9}});   // unspecified parameters keep defaults
+//   Mesh mesh = mesh_model(m, s, 64);
+#pragma once
+
+#include "genmod/kernel/fn.hpp"
+#include "genmod/kernel/interval.hpp"
+#include "genmod/operators/curve.hpp"
+#include "genmod/tessellate/mesh.hpp"
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace genmod::models {
+
+struct ModelParameter {
+  std::string name;
+  double value;  // the default
+  std::string doc;
+};
+
+using ParameterValues = std::map<std::string, double>;
+
+struct Model {
+  std::string name, description;
+  std::vector<ModelParameter> parameters;
+  // Builds the surface from a COMPLETE parameter map (every parameter present); use
+  // build_model() to start from overrides. Throws std::invalid_argument for values out of
+  // the parameter's range (the message names the parameter).
+  std::function<Fn(const ParameterValues&)> build;
+  Interval u = Interval(0.0, 1.0), v = Interval(0.0, 1.0);
+  bool periodic_u = false, periodic_v = false;
+};
+
+// All models, in a fixed order.
+const std::vector<Model>& gallery();
+// The model of that name; std::invalid_argument naming it and listing the known models.
+const Model& find_model(const std::string& name);
+
+// The defaults with `overrides` applied; std::invalid_argument for a parameter name the model
+// does not have (the message names it, the model and the model's parameters) or a non-finite
+// value.
+ParameterValues resolve_parameters(const Model& model, const ParameterValues& overrides = {});
+// model.build(resolve_parameters(model, overrides)).
+Fn build_model(const Model& model, const ParameterValues& overrides = {});
+// The surface meshed with mesh_parametric on an n x n lattice over the model's domain, with
+// the model's periodic axes closed (n >= 3).
+Mesh mesh_model(const Model& model, const Fn& surface, std::size_t n);
+
+// The authored curves of the thesis models (from a complete parameter map), for tests and
+// for reuse. Profiles are (radius, height) curves, cross sections closed curves in the plane.
+Curve doorknob_profile(const ParameterValues& p);
+Curve patio_tile_cross(const ParameterValues& p);
+Curve patio_tile_profile(const ParameterValues& p);
+Curve lamp_stand_cross(const ParameterValues& p);
+Curve lamp_stand_profile(const ParameterValues& p);
+
+namespace detail {
+// Model definitions, one per source file.
+Model doorknob_model();
+Model patio_tile_model();
+Model lamp_stand_model();
+Model sphere_model();
+Model torus_model();
+// p.at(name) with a message naming the missing parameter; require_positive also checks > 0.
+double param(const ParameterValues& p, const std::string& name);
+double require_positive(const ParameterValues& p, const std::string& name);
+}  // namespace detail
+
+}  // namespace genmod::models

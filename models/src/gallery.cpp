@@ -1,0 +1,71 @@
+// The gallery registry, parameter resolution and meshing.
+#include "genmod/models/gallery.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace genmod::models {
+
+const std::vector<Model>& gallery() {
+  static const std::vector<Model> models{detail::doorknob_model(), detail::patio_tile_model(),
+                                         detail::lamp_stand_model(), detail::sphere_model(),
+                                         detail::torus_model()};
+  return models;
+}
+
+const Model& find_model(const std::string& name) {
+  for (const Model& m : gallery())
+    if (m.name == name) return m;
+  std::string known;
+  for (const Model& m : gallery()) known += (known.empty() ? "" : ", ") + m.name;
+  throw std::invalid_argument("unknown model '" + name + "' (known models: " + known + ")");
+}
+
+ParameterValues resolve_parameters(const Model& model, const ParameterValues& overrides) {
+  ParameterValues values;
+  for (const ModelParameter& p : model.parameters) values[p.name] = p.value;
+  for (const auto& [name, value] : overrides) {
+    if (values.find(name) == values.end()) {
+      std::string known;
+      for (const ModelParameter& p : model.parameters) known += (known.empty() ? "" : ", ") + p.name;
+      throw std::invalid_argument("model '" + model.name + "' has no parameter '" + name +
+                                  "' (its parameters: " + (known.empty() ? "none" : known) + ")");
+    }
+    if (!std::isfinite(value))
+      throw std::invalid_argument("parameter '" + name + "' of model '" + model.name + "' must be finite");
+    values[name] = value;
+  }
+  return values;
+}
+
+Fn build_model(const Model& model, const ParameterValues& overrides) {
+  return model.build(resolve_parameters(model, overrides));
+}
+
+Mesh mesh_model(const Model& model, const Fn& surface, std::size_t n) {
+  if (n < 3) throw std::invalid_argument("mesh resolution must be at least 3, got " + std::to_string(n));
+  const LatticeAxis u{0, model.u.lo(), model.u.hi(), n};
+  const LatticeAxis v{1, model.v.lo(), model.v.hi(), n};
+  ParametricMeshOptions options;
+  options.periodic_u = model.periodic_u;
+  options.periodic_v = model.periodic_v;
+  return mesh_parametric(surface, u, v, options);
+}
+
+namespace detail {
+
+double param(const ParameterValues& p, const std::string& name) {
+  const auto it = p.find(name);
+  if (it == p.end()) throw std::invalid_argument("missing model parameter '" + name + "'");
+  return it->second;
+}
+
+double require_positive(const ParameterValues& p, const std::string& name) {
+  const double value = param(p, name);
+  if (!(value > 0.0))
+    throw std::invalid_argument("parameter '" + name + "' must be > 0, got " + std::to_string(value));
+  return value;
+}
+
+}  // namespace detail
+}  // namespace genmod::models
