@@ -38,6 +38,19 @@ std::string error_of(F&& f) {
   return "(no exception)";
 }
 
+
+// S(u, v) = (g1(u) d1(v), g2(u) d1(v), d2(v)): the profile product of cross section g and
+// profile d (snyder.md section 7.1), at the sample grid.
+void expect_profile_product(const Fn& s, const Curve& cross, const Curve& profile) {
+  for (double u : kSamples)
+    for (double v : kSamples) {
+      const auto S = at(s, u, v), g = at(cross, u), d = at(profile, v);
+      EXPECT_NEAR(S[0], g[0] * d[0], 1e-12) << u << ", " << v;
+      EXPECT_NEAR(S[1], g[1] * d[0], 1e-12) << u << ", " << v;
+      EXPECT_NEAR(S[2], d[1], 1e-12) << u << ", " << v;
+    }
+}
+
 TEST(Gallery, HasTheThesisAndStandardModels) {
   std::vector<std::string> names;
   for (const Model& m : gallery()) names.push_back(m.name);
@@ -91,13 +104,7 @@ TEST(PatioTile, IsAPolyhedralProfileProduct) {
   const ParameterValues p = resolve_parameters(m);
   const Fn s = m.build(p);
   const Curve cross = patio_tile_cross(p), profile = patio_tile_profile(p);
-  for (double u : kSamples)
-    for (double v : kSamples) {
-      const auto S = at(s, u, v), g = at(cross, u), d = at(profile, v);
-      EXPECT_NEAR(S[0], g[0] * d[0], 1e-12);
-      EXPECT_NEAR(S[1], g[1] * d[0], 1e-12);
-      EXPECT_NEAR(S[2], d[1], 1e-12);
-    }
+  expect_profile_product(s, cross, profile);
   // Planarity: within each (cross edge) x (profile segment) patch, a fifth interior point lies
   // on the plane of three corners.
   const int sides = 8, segments = 5;
@@ -124,13 +131,7 @@ TEST(LampStand, IsAProfileProductOfAStarShapedClosedCross) {
   const ParameterValues p = resolve_parameters(m);
   const Fn s = m.build(p);
   const Curve cross = lamp_stand_cross(p), profile = lamp_stand_profile(p);
-  for (double u : kSamples)
-    for (double v : kSamples) {
-      const auto S = at(s, u, v), g = at(cross, u), d = at(profile, v);
-      EXPECT_NEAR(S[0], g[0] * d[0], 1e-12);
-      EXPECT_NEAR(S[1], g[1] * d[0], 1e-12);
-      EXPECT_NEAR(S[2], d[1], 1e-12);
-    }
+  expect_profile_product(s, cross, profile);
   const auto g0 = at(cross, 0.0), g1 = at(cross, 1.0);
   EXPECT_NEAR(g0[0], g1[0], 1e-12);
   EXPECT_NEAR(g0[1], g1[1], 1e-12);
