@@ -2,6 +2,8 @@
 #include "genmod/models/gallery.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <utility>
 #include <stdexcept>
 
 namespace genmod::models {
@@ -42,8 +44,41 @@ Fn build_model(const Model& model, const ParameterValues& overrides) {
   return model.build(resolve_parameters(model, overrides));
 }
 
+namespace {
+
+void append(Mesh& to, const Mesh& patch, bool flip) {
+  const auto offset = static_cast<std::uint32_t>(to.vertices.size());
+  to.vertices.insert(to.vertices.end(), patch.vertices.begin(), patch.vertices.end());
+  for (auto t : patch.triangles) {
+    if (flip) std::swap(t[1], t[2]);
+    to.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  }
+}
+
+// The six faces of the solid: coordinate k fixed at an end, the other two as lattice axes in
+// increasing order. S_a x S_b points along +k for k = 0 and 2 and along -k for k = 1 (for
+// the identity map), so the faces that would point inward are flipped.
+Mesh mesh_solid(const Model& model, const Fn& solid, std::size_t n) {
+  if (solid.dim() != 3) throw std::invalid_argument("solid model '" + model.name + "' must have 3 outputs");
+  const Interval domain[3] = {model.u, model.v, model.w};
+  Mesh mesh;
+  for (int k = 0; k < 3; ++k)
+    for (int end = 0; end < 2; ++end) {
+      const int a = k == 0 ? 1 : 0, b = k == 2 ? 1 : 2;
+      const Fn face = compose(solid, k, Fn(end == 0 ? domain[k].lo() : domain[k].hi()));
+      const Mesh patch = mesh_parametric(face, {a, domain[a].lo(), domain[a].hi(), n},
+                                         {b, domain[b].lo(), domain[b].hi(), n});
+      const bool along_plus_k = k != 1;
+      append(mesh, patch, along_plus_k == (end == 0));
+    }
+  return mesh;
+}
+
+}  // namespace
+
 Mesh mesh_model(const Model& model, const Fn& surface, std::size_t n) {
   if (n < 3) throw std::invalid_argument("mesh resolution must be at least 3, got " + std::to_string(n));
+  if (model.solid) return mesh_solid(model, surface, n);
   const LatticeAxis u{0, model.u.lo(), model.u.hi(), n};
   const LatticeAxis v{1, model.v.lo(), model.v.hi(), n};
   ParametricMeshOptions options;

@@ -69,9 +69,14 @@ TEST(Gallery, EveryModelMeshesAtItsDefaults) {
     const Fn s = build_model(m);
     ASSERT_EQ(s.dim(), 3u);
     const Mesh mesh = mesh_model(m, s, n);
-    EXPECT_EQ(mesh.vertices.size(), n * n);
-    const std::size_t quads_u = m.periodic_u ? n : n - 1, quads_v = m.periodic_v ? n : n - 1;
-    EXPECT_EQ(mesh.triangles.size(), 2 * quads_u * quads_v);
+    if (m.solid) {  // six boundary patches
+      EXPECT_EQ(mesh.vertices.size(), 6 * n * n);
+      EXPECT_EQ(mesh.triangles.size(), 6 * 2 * (n - 1) * (n - 1));
+    } else {
+      EXPECT_EQ(mesh.vertices.size(), n * n);
+      const std::size_t quads_u = m.periodic_u ? n : n - 1, quads_v = m.periodic_v ? n : n - 1;
+      EXPECT_EQ(mesh.triangles.size(), 2 * quads_u * quads_v);
+    }
     for (const auto& p : mesh.vertices)
       for (double c : p) ASSERT_TRUE(std::isfinite(c));
   }

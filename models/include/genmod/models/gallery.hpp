@@ -3,7 +3,10 @@
 // Thesis models (research/snyder.md section 7) are built the way the thesis builds them, as
 // profile products (sweep.hpp) of authored substitute curves (the original .crv files are
 // lost): doorknob (7.2), patio_tile (7.3), lamp_stand (7.4). Standard shapes: sphere, torus.
-// Every model is a 3-D surface of (u, v) = (x(0), x(1)) over its domain.
+// A model is either a 3-D surface of (u, v) = (x(0), x(1)) over its domain, or (with
+// `solid`) a generative solid of (u, v, w) = (x(0), x(1), x(2)): a deformed brick, meshed by
+// its six boundary faces. Time-dependent models and families (the fillet's bulge, the wing's
+// time) take the extra coordinate as a model parameter and are surfaces.
 //
 //   const Model& m = find_model("doorknob");
 //   Fn s = build_model(m, {{"bulge_radius", 0.9}});   // unspecified parameters keep defaults
@@ -40,6 +43,9 @@ struct Model {
   std::function<Fn(const ParameterValues&)> build;
   Interval u = Interval(0.0, 1.0), v = Interval(0.0, 1.0);
   bool periodic_u = false, periodic_v = false;
+  // A solid S(u, v, w) with w in `w` (three inputs) instead of a surface.
+  bool solid = false;
+  Interval w = Interval(0.0, 1.0);
 };
 
 // All models, in a fixed order.
@@ -54,7 +60,9 @@ ParameterValues resolve_parameters(const Model& model, const ParameterValues& ov
 // model.build(resolve_parameters(model, overrides)).
 Fn build_model(const Model& model, const ParameterValues& overrides = {});
 // The surface meshed with mesh_parametric on an n x n lattice over the model's domain, with
-// the model's periodic axes closed (n >= 3).
+// the model's periodic axes closed (n >= 3). A solid is meshed as its six boundary faces
+// (u, v or w at either end of its domain), each an n x n lattice patch, oriented outward
+// where the solid's Jacobian determinant is positive; the patches are not welded.
 Mesh mesh_model(const Model& model, const Fn& surface, std::size_t n);
 
 // The authored curves of the thesis models (from a complete parameter map), for tests and
