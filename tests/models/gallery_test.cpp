@@ -181,6 +181,15 @@ TEST(Gallery, OverridesChangeTheShape) {
   }
 }
 
+// The compiled-in curve files parse, and a missing one is named.
+TEST(Gallery, CurveFilesParse) {
+  const std::vector<std::string> names = gallery_curve_names();
+  EXPECT_FALSE(names.empty());
+  for (const std::string& name : names) EXPECT_GE(gallery_curve(name).dimension(), 1) << name;
+  const std::string msg = error_of([] { gallery_curve("no_such_curve"); });
+  EXPECT_NE(msg.find("no_such_curve"), std::string::npos) << msg;
+}
+
 TEST(Gallery, UnknownModelNamesItAndListsKnownOnes) {
   const std::string msg = error_of([] { find_model("teapot"); });
   EXPECT_NE(msg.find("teapot"), std::string::npos) << msg;

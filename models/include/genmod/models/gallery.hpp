@@ -22,6 +22,7 @@
 #include <functional>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace genmod::models {
@@ -64,6 +65,12 @@ Fn build_model(const Model& model, const ParameterValues& overrides = {});
 // (u, v or w at either end of its domain), each an n x n lattice patch, oriented outward
 // where the solid's Jacobian determinant is positive; the patches are not welded.
 Mesh mesh_model(const Model& model, const Fn& surface, std::size_t n);
+
+// The curve files of models/curves (compiled into the library): the curve in
+// models/curves/<name>.crv, parsed (CurveFileError naming the file and line), or
+// std::invalid_argument naming a curve that does not exist.
+Curve gallery_curve(std::string_view name);
+std::vector<std::string> gallery_curve_names();
 
 // The authored curves of the thesis models (from a complete parameter map), for tests and
 // for reuse. Profiles are (radius, height) curves, cross sections closed curves in the plane.
