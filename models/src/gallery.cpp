@@ -10,7 +10,13 @@ namespace genmod::models {
 
 const std::vector<Model>& gallery() {
   static const std::vector<Model> models{detail::doorknob_model(), detail::patio_tile_model(),
-                                         detail::lamp_stand_model(), detail::sphere_model(),
+                                         detail::lamp_stand_model(), detail::tennis_racket_model(),
+                                         detail::briefcase_handle_model(), detail::banana_model(),
+                                         detail::turbine_blade_model(), detail::gear_model(),
+                                         detail::sphere_cylinder_fillet_model(),
+                                         detail::circular_beam_model(), detail::time_varying_curve_model(),
+                                         detail::wing_model(), detail::furry_bear_model(),
+                                         detail::sphere_model(),
                                          detail::torus_model()};
   return models;
 }

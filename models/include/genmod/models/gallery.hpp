@@ -80,11 +80,49 @@ Curve patio_tile_profile(const ParameterValues& p);
 Curve lamp_stand_cross(const ParameterValues& p);
 Curve lamp_stand_profile(const ParameterValues& p);
 
+// Sweep models of thesis 7.5-7.11 and 7.22-7.24: their authored curves (as functions of
+// x(0), already scaled by the model's parameters) and extra fields, for tests and reuse.
+// The closed rounded-rectangle cross section (frame_width x frame_depth) and the head oval.
+Fn tennis_racket_cross(const ParameterValues& p);
+Fn tennis_racket_wire(const ParameterValues& p);
+// The grip cross section (x in [-1, 1], y = z scaled by depth / 2) and the two arch rails.
+Fn briefcase_handle_cross(const ParameterValues& p);
+Fn briefcase_handle_rail1(const ParameterValues& p);
+Fn briefcase_handle_rail2(const ParameterValues& p);
+// The closed gear curve (teeth, outer_radius, tooth_depth) the gear interpolates from.
+Fn gear_cross(const ParameterValues& p);
+// The App. B.1 fillet as the thesis writes it: a function of (u, v, w) = (x(0), x(1), x(2)),
+// the bulge w as the third input (the model fixes w = bulge); the cylinder and sphere
+// surfaces are cyl(u, v) = (interp(v, -1, 1), cylinder_radius circle(2 pi u)) and the sphere.
+Fn sphere_cylinder_fillet_family(const ParameterValues& p);
+// Time-varying curve (7.23): c(u, t) = (u, amplitude u^2 sin(2 pi (t - phase_lag u))) as a
+// function of (u, t) = (x(0), x(1)), and u_t(t), the parameter where its arclength from 0
+// reaches `arclength`, a function of t = x(1) (integrate + inverse operators).
+Fn time_varying_curve_c(const ParameterValues& p);
+Fn time_varying_curve_end(const ParameterValues& p);
+// The wing's wire (the time-varying curve at the model's `time`, a 2-D function of x(1)) and
+// its cross section (a function of (u, s) = (x(0), x(1))).
+Fn wing_wire(const ParameterValues& p);
+Fn wing_cross(const ParameterValues& p);
+// The furry bear's hair field V(u, v) = (S, S + hair_length normalize(N + kappa S_v)) in R^6,
+// S the scalp (the model surface), N = S_u x S_v.
+Fn furry_bear_hair(const ParameterValues& p);
+
 namespace detail {
 // Model definitions, one per source file.
 Model doorknob_model();
 Model patio_tile_model();
 Model lamp_stand_model();
+Model tennis_racket_model();
+Model briefcase_handle_model();
+Model banana_model();
+Model turbine_blade_model();
+Model gear_model();
+Model sphere_cylinder_fillet_model();
+Model circular_beam_model();
+Model time_varying_curve_model();
+Model wing_model();
+Model furry_bear_model();
 Model sphere_model();
 Model torus_model();
 // p.at(name) with a message naming the missing parameter; require_positive also checks > 0.
