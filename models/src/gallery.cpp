@@ -9,15 +9,33 @@
 namespace genmod::models {
 
 const std::vector<Model>& gallery() {
-  static const std::vector<Model> models{detail::doorknob_model(), detail::patio_tile_model(),
-                                         detail::lamp_stand_model(), detail::tennis_racket_model(),
-                                         detail::briefcase_handle_model(), detail::banana_model(),
-                                         detail::turbine_blade_model(), detail::gear_model(),
-                                         detail::sphere_cylinder_fillet_model(),
-                                         detail::circular_beam_model(), detail::time_varying_curve_model(),
-                                         detail::wing_model(), detail::furry_bear_model(),
-                                         detail::sphere_model(),
-                                         detail::torus_model()};
+  // The thesis models in the order of its Chapter 3 / Appendix B, then standard shapes.
+  static const std::vector<Model> models{
+      detail::doorknob_model(),
+      detail::patio_tile_model(),
+      detail::lamp_stand_model(),
+      detail::tennis_racket_model(),
+      detail::briefcase_handle_model(),
+      detail::banana_model(),
+      detail::turbine_blade_model(),
+      detail::gear_model(),
+      detail::sphere_cylinder_fillet_model(),
+      detail::cross_section_matching_model(),
+      detail::offsets_model(),
+      detail::offset_plate_model(),
+      detail::spoon_model(),
+      detail::key_model(),
+      detail::cpg_model(),
+      detail::screwdriver_regular_model(),
+      detail::screwdriver_phillips_model(),
+      detail::cpg_fillet_model(),
+      detail::bottle_model(),
+      detail::circular_beam_model(),
+      detail::time_varying_curve_model(),
+      detail::wing_model(),
+      detail::furry_bear_model(),
+      detail::sphere_model(),
+      detail::torus_model()};
   return models;
 }
 

@@ -1,8 +1,15 @@
 // The model gallery: named parametric surfaces with documented parameters.
 //
-// Thesis models (research/snyder.md section 7) are built the way the thesis builds them, as
-// profile products (sweep.hpp) of authored substitute curves (the original .crv files are
-// lost): doorknob (7.2), patio_tile (7.3), lamp_stand (7.4). Standard shapes: sphere, torus.
+// The 23 examples of the thesis's Chapter 3 and Appendix B (research/snyder.md section 7),
+// built the way the thesis builds them from genmod's operators (sweeps, offsets, warps, the
+// CPG path builder, region Booleans, matched schedules, integrate / inverse / minimize), with
+// authored substitute curves (the original .crv files are lost; ours are models/curves/*.crv
+// or built in code where a parameter shapes them), in thesis order: doorknob (7.2), patio_tile,
+// lamp_stand, tennis_racket (7.5), briefcase_handle, banana, turbine_blade, gear,
+// sphere_cylinder_fillet (7.11), cross_section_matching, offsets, offset_plate, spoon, key,
+// cpg (7.17), screwdriver_regular, screwdriver_phillips, cpg_fillet, bottle (7.20),
+// circular_beam, time_varying_curve, wing, furry_bear (7.24). Then standard shapes: sphere,
+// torus. `genmod list` prints them with their parameters.
 // A model is either a 3-D surface of (u, v) = (x(0), x(1)) over its domain, or (with
 // `solid`) a generative solid of (u, v, w) = (x(0), x(1), x(2)): a deformed brick, meshed by
 // its six boundary faces. Time-dependent models and families (the fillet's bulge, the wing's
@@ -108,6 +115,39 @@ Fn wing_cross(const ParameterValues& p);
 // S the scalp (the model surface), N = S_u x S_v.
 Fn furry_bear_hair(const ParameterValues& p);
 
+// Offset models of thesis 7.13-7.18 (offsets, offset_plate, spoon, key, screwdriver tips).
+// The offsets surface of any closed planar curve of x(0): (offset_curve(c, r)(u), r) with
+// r = interp(v, -r_max, r_max) (operators/offset.hpp: positive r is inward on a CCW curve).
+Fn offsets_surface(const Fn& curve, double r_max);
+// The offsets model's closed curve (models/curves/offsets_curve.crv).
+Curve offsets_curve(const ParameterValues& p);
+// The plate's closed cross section and its (inward offset d1, height d2) edge profile.
+Curve offset_plate_cross(const ParameterValues& p);
+Curve offset_plate_profile(const ParameterValues& p);
+// The spoon's mid-surface (shape_x(v), arc(u, v) + (0, bend_y(v))) before thickening, and
+// its half thickness thick_y(v) (functions of (u, v) = (x(0), x(1))).
+Fn spoon_mid_surface(const ParameterValues& p);
+Fn spoon_half_thickness(const ParameterValues& p);
+// The key's sides before the warp (the thesis's _sides).
+Fn key_unwarped(const ParameterValues& p);
+// The screwdriver tips' planar cross sections as functions of (u, v) (the model is
+// (section, z(v))), and the Phillips tip's circle radius and wedge-vertex distance D of v.
+Fn screwdriver_regular_section(const ParameterValues& p);
+Fn screwdriver_phillips_section(const ParameterValues& p);
+Fn screwdriver_phillips_radius(const ParameterValues& p);
+Fn screwdriver_phillips_depth(const ParameterValues& p);
+
+// Models on the solver layer's operators (thesis 7.12, 7.17-7.20). The bottle's cross section
+// (a function of (u, v): the rounding varies along the bottle) and its thesis half; the CPG
+// regions and the result's boundary (curves of x(0); `fillet_radius` present = filleted,
+// `operation` absent = union); the matched inner curve of the cross-section matching model.
+Fn bottle_half_cross(const ParameterValues& p);
+Fn bottle_cross(const ParameterValues& p);
+Fn cpg_circle(const ParameterValues& p);
+Fn cpg_bean(const ParameterValues& p);
+Fn cpg_boundary(const ParameterValues& p);
+Fn matching_inner(const ParameterValues& p);
+
 namespace detail {
 // Model definitions, one per source file.
 Model doorknob_model();
@@ -119,10 +159,20 @@ Model banana_model();
 Model turbine_blade_model();
 Model gear_model();
 Model sphere_cylinder_fillet_model();
+Model offsets_model();
+Model offset_plate_model();
+Model spoon_model();
+Model key_model();
+Model screwdriver_regular_model();
+Model screwdriver_phillips_model();
 Model circular_beam_model();
 Model time_varying_curve_model();
 Model wing_model();
 Model furry_bear_model();
+Model cross_section_matching_model();
+Model cpg_model();
+Model cpg_fillet_model();
+Model bottle_model();
 Model sphere_model();
 Model torus_model();
 // p.at(name) with a message naming the missing parameter; require_positive also checks > 0.
