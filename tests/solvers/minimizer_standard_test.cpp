@@ -4,9 +4,17 @@
 
 #include <gtest/gtest.h>
 
+#include <ostream>
 #include <string>
 
 namespace genmod {
+
+namespace minimizer_problems {
+// Test names and failure messages show the problem's name (not its bytes, which hold
+// addresses and would make the ctest names differ from run to run).
+void PrintTo(const Problem& problem, std::ostream* os) { *os << problem.name; }
+}  // namespace minimizer_problems
+
 namespace {
 
 bool covered(const MinimizeResult& r, std::span<const double> p, double tol) {
