@@ -14,16 +14,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-void require_scalar(const char* op, const char* what, const Fn& f) {
-  if (f.dim() != 1)
-    detail::dimension_error(op, std::string(what) + " has dimension " + std::to_string(f.dim()) + ", expected 1");
-}
+using detail::require_dim;
 
-void require_dim(const char* op, const char* what, const Fn& f, std::size_t expected) {
-  if (f.dim() != expected)
-    detail::dimension_error(op, std::string(what) + " has dimension " + std::to_string(f.dim()) + ", expected " +
-                                    std::to_string(expected));
-}
+void require_scalar(const char* op, const char* what, const Fn& f) { require_dim(op, what, f, 1); }
 
 // sign(c) |c|^e, with |c|^e = 0 at c = 0.
 Fn spow(const Fn& c, const Fn& e) { return select(c < 0.0, -1.0, 1.0) * pow(abs(c), e); }

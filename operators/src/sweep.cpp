@@ -8,15 +8,7 @@
 
 namespace genmod {
 
-namespace {
-
-void require_dim(const char* op, const char* what, const Fn& f, std::size_t expected) {
-  if (f.dim() != expected)
-    detail::dimension_error(op, std::string(what) + " has dimension " + std::to_string(f.dim()) + ", expected " +
-                                    std::to_string(expected));
-}
-
-}  // namespace
+using detail::require_dim;
 
 Fn curve_in(const Fn& curve, int parm) {
   if (parm < 0 || parm >= 64) detail::dimension_error("curve_in", "parameter index " + std::to_string(parm) + " out of range");

@@ -3,7 +3,7 @@
 // matching (Fig 3.10).
 #include "genmod/models/gallery.hpp"
 
-#include "genmod/kernel/point_evaluator.hpp"
+#include "models/model_testing.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,10 +14,7 @@
 namespace genmod::models {
 namespace {
 
-std::vector<double> at(const Fn& f, double u, double v = 0.0) {
-  const std::vector<double> point{u, v};
-  return evaluate(f, point);
-}
+using namespace testing;  // the shared helpers of models/model_testing.hpp
 
 // Winding number of the closed curve c (a function of x(0) on [0, 1]) around q, from a
 // dense polygon: exact for points not too close to the curve.

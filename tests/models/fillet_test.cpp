@@ -3,53 +3,23 @@
 // with the symbolic derivatives of the thesis's 3-input form fillet(u, v, w).
 #include "genmod/models/gallery.hpp"
 
-#include "genmod/kernel/point_evaluator.hpp"
-#include "genmod/kernel/tape.hpp"
 #include "genmod/operators/vector.hpp"
+#include "models/model_testing.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace genmod::models {
 namespace {
 
-class Eval {
- public:
-  explicit Eval(const Fn& f) : tape_(f), inputs_(f.inputs()) {}
-  std::vector<double> operator()(std::initializer_list<double> coords) {
-    const std::vector<double> c(coords);
-    std::vector<double> point;
-    for (int i : inputs_) point.push_back(c.at(static_cast<std::size_t>(i)));
-    const auto y = ev_.eval(tape_, std::span<const double>(point));
-    return {y.begin(), y.end()};
-  }
-
- private:
-  Tape tape_;
-  std::vector<int> inputs_;
-  PointEvaluator ev_;
-};
+using namespace testing;  // the shared helpers of models/model_testing.hpp
 
 const std::vector<double> kU{0.0, 0.013, 0.21, 0.37, 0.5, 0.618, 0.83, 0.97};
 const std::vector<double> kW{0.0, 0.3, 0.5, 1.0};
-
-double dot3(const std::vector<double>& a, const std::vector<double>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm3(const std::vector<double>& a) { return std::sqrt(dot3(a, a)); }
-
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
 
 TEST(SphereCylinderFillet, EndsLieOnTheCylinderAndTheSphere) {
   const ParameterValues p = resolve_parameters(find_model("sphere_cylinder_fillet"));

@@ -3,41 +3,19 @@
 // bad names are reported.
 #include "genmod/models/gallery.hpp"
 
-#include "genmod/kernel/point_evaluator.hpp"
+#include "models/model_testing.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace genmod::models {
 namespace {
 
-std::vector<double> at(const Fn& f, double u, double v) {
-  const std::vector<double> point{u, v};
-  return evaluate(f, point);
-}
-std::vector<double> at(const Curve& c, double t) {
-  const std::vector<double> point{t};
-  return evaluate(c(x(0)), point);
-}
-
-// Sample parameters strictly inside [0, 1].
-const std::vector<double> kSamples{0.0, 0.013, 0.21, 0.37, 0.5, 0.618, 0.83, 0.97, 1.0};
-
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
-
+using namespace testing;  // the shared helpers of models/model_testing.hpp
 
 // S(u, v) = (g1(u) d1(v), g2(u) d1(v), d2(v)): the profile product of cross section g and
 // profile d (snyder.md section 7.1), at the sample grid.

@@ -4,42 +4,19 @@
 // offset by d1(v) at height d2(v).
 #include "genmod/models/gallery.hpp"
 
-#include "genmod/kernel/point_evaluator.hpp"
+#include "models/model_testing.hpp"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <array>
 #include <cmath>
-#include <limits>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace genmod::models {
 namespace {
 
-using P2 = std::array<double, 2>;
-
-std::vector<double> at(const Fn& f, double u, double v) {
-  const std::vector<double> point{u, v};
-  return evaluate(f, point);
-}
-std::vector<double> at(const Curve& c, double t) {
-  const std::vector<double> point{t};
-  return evaluate(c(x(0)), point);
-}
-
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
+using namespace testing;  // the shared helpers of models/model_testing.hpp
 
 // The closed curve sampled at n + 1 points (t = k / n).
 std::vector<P2> dense(const Curve& c, int n) {
@@ -49,19 +26,6 @@ std::vector<P2> dense(const Curve& c, int n) {
     points.push_back({q[0], q[1]});
   }
   return points;
-}
-
-// Distance from q to the polyline.
-double distance(const std::vector<P2>& line, P2 q) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-    const P2 a = line[i], b = line[i + 1];
-    const double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
-    double t = len2 > 0 ? ((q[0] - a[0]) * dx + (q[1] - a[1]) * dy) / len2 : 0.0;
-    t = std::clamp(t, 0.0, 1.0);
-    best = std::min(best, std::hypot(q[0] - a[0] - t * dx, q[1] - a[1] - t * dy));
-  }
-  return best;
 }
 
 const std::vector<double> kV{0.0, 0.1, 0.3, 0.45, 0.5, 0.62, 0.8, 0.95, 1.0};

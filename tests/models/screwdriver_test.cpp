@@ -6,36 +6,20 @@
 
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
+#include "models/model_testing.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace genmod::models {
 namespace {
 
-using P2 = std::array<double, 2>;
-
-std::vector<double> at(const Fn& f, double u, double v) {
-  const std::vector<double> point{u, v};
-  return evaluate(f, point);
-}
-
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
+using namespace testing;  // the shared helpers of models/model_testing.hpp
 
 // The section at v sampled at n + 1 points u = k / n.
 // (One tape for all the points: the sections are large DAGs.)
@@ -55,17 +39,6 @@ double shoelace(const std::vector<P2>& p) {
   double twice = 0;
   for (std::size_t i = 0; i + 1 < p.size(); ++i) twice += p[i][0] * p[i + 1][1] - p[i + 1][0] * p[i][1];
   return twice / 2;
-}
-
-double distance(const std::vector<P2>& line, P2 q) {
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-    const P2 a = line[i], b = line[i + 1];
-    const double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
-    const double t = len2 > 0 ? std::clamp(((q[0] - a[0]) * dx + (q[1] - a[1]) * dy) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, std::hypot(q[0] - a[0] - t * dx, q[1] - a[1] - t * dy));
-  }
-  return best;
 }
 
 const std::vector<double> kV{0.0, 0.1, 0.25, 0.5, 0.73, 0.9, 1.0};

@@ -3,36 +3,18 @@
 // key is its unwarped sides plus exactly warp_scale v x^2 + warp_offset v in z.
 #include "genmod/models/gallery.hpp"
 
-#include "genmod/kernel/point_evaluator.hpp"
+#include "models/model_testing.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace genmod::models {
 namespace {
 
-std::vector<double> at(const Fn& f, double u, double v) {
-  const std::vector<double> point{u, v};
-  return evaluate(f, point);
-}
-std::vector<double> at(const Curve& c, double t) {
-  const std::vector<double> point{t};
-  return evaluate(c(x(0)), point);
-}
-
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
+using namespace testing;  // the shared helpers of models/model_testing.hpp
 
 const std::vector<double> kV{0.0, 0.07, 0.2, 0.33, 0.5, 0.61, 0.75, 0.88, 0.96, 1.0};
 

@@ -4,51 +4,21 @@
 // 32), checked at sample points against the model's own curves.
 #include "genmod/models/gallery.hpp"
 
-#include "genmod/kernel/point_evaluator.hpp"
-#include "genmod/kernel/tape.hpp"
 #include "genmod/operators/vector.hpp"
+#include "models/model_testing.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace genmod::models {
 namespace {
 
-// Point evaluation of f at values of x(0), x(1), ... (one compiled tape, many points).
-class Eval {
- public:
-  explicit Eval(const Fn& f) : tape_(f), inputs_(f.inputs()) {}
-  std::vector<double> operator()(std::initializer_list<double> coords) {
-    const std::vector<double> c(coords);
-    std::vector<double> point;
-    for (int i : inputs_) point.push_back(c.at(static_cast<std::size_t>(i)));
-    const auto y = ev_.eval(tape_, std::span<const double>(point));
-    return {y.begin(), y.end()};
-  }
-
- private:
-  Tape tape_;
-  std::vector<int> inputs_;
-  PointEvaluator ev_;
-};
-
-const std::vector<double> kSamples{0.0, 0.013, 0.21, 0.37, 0.5, 0.618, 0.83, 0.97, 1.0};
-
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
+using namespace testing;  // the shared helpers of models/model_testing.hpp
 
 // Claim 28, wire product: (S - (wire, 0)) . (t, 0) = 0, |S_xy - wire| = |g1|, S_z = g2.
 TEST(TennisRacket, CrossSectionIsPerpendicularToTheHeadWire) {

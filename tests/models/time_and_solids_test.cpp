@@ -3,53 +3,22 @@
 // the wing (wire product along it) and the furry bear (a hair field on a scalp).
 #include "genmod/models/gallery.hpp"
 
-#include "genmod/kernel/point_evaluator.hpp"
-#include "genmod/kernel/tape.hpp"
 #include "genmod/operators/vector.hpp"
 #include "genmod/tessellate/lattice.hpp"
+#include "models/model_testing.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace genmod::models {
 namespace {
 
-class Eval {
- public:
-  explicit Eval(const Fn& f) : tape_(f), inputs_(f.inputs()) {}
-  std::vector<double> operator()(std::initializer_list<double> coords) {
-    const std::vector<double> c(coords);
-    std::vector<double> point;
-    for (int i : inputs_) point.push_back(c.at(static_cast<std::size_t>(i)));
-    const auto y = ev_.eval(tape_, std::span<const double>(point));
-    return {y.begin(), y.end()};
-  }
+using namespace testing;  // the shared helpers of models/model_testing.hpp
 
- private:
-  Tape tape_;
-  std::vector<int> inputs_;
-  PointEvaluator ev_;
-};
-
-const std::vector<double> kSamples{0.0, 0.013, 0.21, 0.37, 0.5, 0.618, 0.83, 0.97, 1.0};
-
-template <typename F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
-
-double dot3(const std::vector<double>& a, const std::vector<double>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-double norm3(const std::vector<double>& a) { return std::sqrt(dot3(a, a)); }
 std::vector<double> cross3(const std::vector<double>& a, const std::vector<double>& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }

@@ -242,21 +242,14 @@ TEST(Arc, ZeroHeightIsTheChordWithSmoothDerivatives) {
 }
 
 TEST(Offset, BadInputNamesTheOperator) {
-  auto expect_throw = [](auto&& f, const std::string& name) {
-    try {
-      f();
-      ADD_FAILURE() << name << " did not throw";
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
-    }
-  };
-  expect_throw([] { normal2d(cat({u, u, u})); }, "normal2d");
-  expect_throw([] { normal2d(cat({v, v}), 0); }, "normal2d");
-  expect_throw([] { offset_curve(circle(u), cat({0.1, 0.2})); }, "offset_curve");
-  expect_throw([] { offset_product(circle(u), x(1)); }, "offset_product");
-  expect_throw([] { closed_offset(cat({u, u, u}), 0.1); }, "closed_offset");
-  expect_throw([] { arc_2pt_height(cat({0.0, 0.0, 0.0}), cat({1.0, 0.0}), 0.1, u); }, "arc_2pt_height");
-  expect_throw([] { arc_2pt_height(cat({0.0, 0.0}), cat({1.0, 0.0}), 0.1, circle(u)); }, "arc_2pt_height");
+  using testing::expect_throw_naming;
+  expect_throw_naming([] { normal2d(cat({u, u, u})); }, "normal2d");
+  expect_throw_naming([] { normal2d(cat({v, v}), 0); }, "normal2d");
+  expect_throw_naming([] { offset_curve(circle(u), cat({0.1, 0.2})); }, "offset_curve");
+  expect_throw_naming([] { offset_product(circle(u), x(1)); }, "offset_product");
+  expect_throw_naming([] { closed_offset(cat({u, u, u}), 0.1); }, "closed_offset");
+  expect_throw_naming([] { arc_2pt_height(cat({0.0, 0.0, 0.0}), cat({1.0, 0.0}), 0.1, u); }, "arc_2pt_height");
+  expect_throw_naming([] { arc_2pt_height(cat({0.0, 0.0}), cat({1.0, 0.0}), 0.1, circle(u)); }, "arc_2pt_height");
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include <bit>
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -222,6 +223,17 @@ inline PropertySpec unit_domain(std::size_t n) {
   PropertySpec spec;
   spec.domain.assign(n, Interval(0.0, 1.0));
   return spec;
+}
+
+// Bad input: f() throws std::invalid_argument whose message names `name` (the operator).
+template <typename F>
+void expect_throw_naming(F&& f, const std::string& name) {
+  try {
+    f();
+    ADD_FAILURE() << name << " did not throw";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace genmod::testing

@@ -167,22 +167,15 @@ TEST(Path, OpenPolylineAndClosingSegment) {
 }
 
 TEST(Path, MisuseNamesThePath) {
-  auto expect_throw = [](auto&& f, const std::string& name) {
-    try {
-      f();
-      ADD_FAILURE() << name << " did not throw";
-    } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
-    }
-  };
-  expect_throw([] { Path p; p.line_to(cat({1.0, 0.0})); }, "Path::line_to");
-  expect_throw([] { Path p; p.move_to(cat({u, 0.0})); }, "Path::move_to");
-  expect_throw([] { Path p; p.move_to(cat({0.0, 0.0, 0.0})); }, "Path::move_to");
-  expect_throw([] { Path p; p.move_to(origin); p.line_to(cat({1.0, 0.0})); p.close(); p.line_to(origin); }, "Path::line_to");
-  expect_throw([] { Path p; p.move_to(origin); p.line_to_arc(cat({1.0, 0.0}), origin, 0.5, true, true, -0.1); },
-               "Path::line_to_arc");
-  expect_throw([] { Path p; (void)p.curve(u); }, "Path::curve");
-  expect_throw([] { mirror_x(cat({u, u, u})); }, "mirror_x");
+  using testing::expect_throw_naming;
+  expect_throw_naming([] { Path p; p.line_to(cat({1.0, 0.0})); }, "Path::line_to");
+  expect_throw_naming([] { Path p; p.move_to(cat({u, 0.0})); }, "Path::move_to");
+  expect_throw_naming([] { Path p; p.move_to(cat({0.0, 0.0, 0.0})); }, "Path::move_to");
+  expect_throw_naming([] { Path p; p.move_to(origin); p.line_to(cat({1.0, 0.0})); p.close(); p.line_to(origin); }, "Path::line_to");
+  expect_throw_naming([] { Path p; p.move_to(origin); p.line_to_arc(cat({1.0, 0.0}), origin, 0.5, true, true, -0.1); },
+                      "Path::line_to_arc");
+  expect_throw_naming([] { Path p; (void)p.curve(u); }, "Path::curve");
+  expect_throw_naming([] { mirror_x(cat({u, u, u})); }, "mirror_x");
 }
 
 }  // namespace

@@ -1,0 +1,87 @@
+// Helpers shared by the model tests (tests/models/*_test.cpp): point evaluation, sample
+// parameters, error messages and small vector and polyline geometry.
+#pragma once
+
+#include "genmod/kernel/fn.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/kernel/tape.hpp"
+#include "genmod/operators/curve.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <initializer_list>
+#include <limits>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace genmod::models::testing {
+
+// A point of the plane.
+using P2 = std::array<double, 2>;
+
+// f at x(0) = u, x(1) = v (v may be left out for a function of x(0) alone).
+inline std::vector<double> at(const Fn& f, double u, double v = 0.0) {
+  const std::vector<double> point{u, v};
+  return evaluate(f, point);
+}
+
+// The curve c at parameter t.
+inline std::vector<double> at(const Curve& c, double t) {
+  const std::vector<double> point{t};
+  return evaluate(c(x(0)), point);
+}
+
+// Point evaluation of f at values of x(0), x(1), ... (one compiled tape, many points).
+class Eval {
+ public:
+  explicit Eval(const Fn& f) : tape_(f), inputs_(f.inputs()) {}
+  std::vector<double> operator()(std::initializer_list<double> coords) {
+    const std::vector<double> c(coords);
+    std::vector<double> point;
+    for (int i : inputs_) point.push_back(c.at(static_cast<std::size_t>(i)));
+    const auto y = ev_.eval(tape_, std::span<const double>(point));
+    return {y.begin(), y.end()};
+  }
+
+ private:
+  Tape tape_;
+  std::vector<int> inputs_;
+  PointEvaluator ev_;
+};
+
+// Sample parameters in [0, 1], both ends included.
+inline const std::vector<double> kSamples{0.0, 0.013, 0.21, 0.37, 0.5, 0.618, 0.83, 0.97, 1.0};
+
+// The message of the std::invalid_argument that f() throws, or "(no exception)".
+template <typename F>
+std::string error_of(F&& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(no exception)";
+}
+
+// Dot product of 3-vectors.
+inline double dot3(const std::vector<double>& a, const std::vector<double>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+// Length of a 3-vector.
+inline double norm3(const std::vector<double>& a) { return std::sqrt(dot3(a, a)); }
+
+// Distance from q to the polyline.
+inline double distance(const std::vector<P2>& line, P2 q) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    const P2 a = line[i], b = line[i + 1];
+    const double dx = b[0] - a[0], dy = b[1] - a[1], len2 = dx * dx + dy * dy;
+    const double t = len2 > 0 ? std::clamp(((q[0] - a[0]) * dx + (q[1] - a[1]) * dy) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, std::hypot(q[0] - a[0] - t * dx, q[1] - a[1] - t * dy));
+  }
+  return best;
+}
+
+}  // namespace genmod::models::testing
