@@ -72,11 +72,12 @@ void count_ops(const Tape& tape, std::size_t points, LatticeStats& stats) {
       stats.op_counts[static_cast<std::size_t>(c.op)] += points;
 }
 
-// Where one tape input of a stage comes from: a lattice coordinate or a lower stage's table.
+// Where one tape input of a stage comes from: values indexed by the stage's multi-index k as
+// values[sum_a k[a] stride[a]]: a lower stage's table, or a lattice coordinate (the axis's
+// sample values with stride 1 on its own position and 0 elsewhere).
 struct Source {
-  std::size_t axis_pos = 0;              // coordinate: position of the axis in the stage
-  const double* table = nullptr;         // table values (nullptr: coordinate)
-  std::vector<std::size_t> stride;       // table: index stride per stage axis position
+  const double* values = nullptr;
+  std::vector<std::size_t> stride;  // per stage axis position
 };
 
 // A sub-lattice: the lattice axes in `axis_mask`, first one fastest.
@@ -110,32 +111,51 @@ std::vector<std::size_t> table_strides(const SubLattice& table, const SubLattice
   return stride;
 }
 
-// Evaluates `tape` at every point of `sub`, reading input k from sources[k]; output j goes to
+// out[i * out_step] = values[index(k_i)] for the n points of `sub` from multi-index k on (the
+// first axis fastest), advancing k past them. The index is updated incrementally, an
+// odometer over the axes, so a gather costs a few adds per value.
+void gather(const double* values, const std::vector<std::size_t>& stride, const SubLattice& sub,
+            std::vector<std::size_t>& k, std::size_t n, double* out, std::size_t out_step) {
+  std::size_t idx = 0;
+  for (std::size_t a = 0; a < k.size(); ++a) idx += k[a] * stride[a];
+  for (std::size_t i = 0; i < n; ++i) {
+    out[i * out_step] = values[idx];
+    for (std::size_t a = 0; a < k.size(); ++a) {
+      idx += stride[a];
+      if (++k[a] < sub.dims[a]) break;
+      idx -= sub.dims[a] * stride[a];
+      k[a] = 0;
+    }
+  }
+}
+
+// The source of lattice coordinate `axis`, which sits at position `pos` of `sub`.
+Source coordinate_source(const std::vector<std::vector<double>>& coords, const SubLattice& sub, std::size_t pos) {
+  Source src{coords[sub.axes[pos]].data(), std::vector<std::size_t>(sub.axes.size(), 0)};
+  src.stride[pos] = 1;
+  return src;
+}
+
+// Evaluates `tape` at every point of `sub`, reading input s from sources[s]; output j goes to
 // outputs[j][0 .. sub.size).
-void run_stage(const Tape& tape, const SubLattice& sub, const std::vector<std::vector<double>>& coords,
-               const std::vector<Source>& sources, std::span<double* const> outputs, BatchEvaluator& ev) {
+void run_stage(const Tape& tape, const SubLattice& sub, const std::vector<Source>& sources,
+               std::span<double* const> outputs, BatchEvaluator& ev) {
   const std::size_t n_in = sources.size();
   std::vector<double> in(n_in * kBlock);
   std::vector<const double*> in_ptr(n_in);
   std::vector<double*> out_ptr(outputs.size());
-  std::vector<std::size_t> k(sub.axes.size(), 0);
+  std::vector<std::size_t> k(sub.axes.size(), 0), k_next;
   for (std::size_t p0 = 0; p0 < sub.size; p0 += kBlock) {
     const std::size_t n = std::min(kBlock, sub.size - p0);
-    for (std::size_t i = 0; i < n; ++i) {
-      for (std::size_t s = 0; s < n_in; ++s) {
-        const Source& src = sources[s];
-        double v;
-        if (src.table == nullptr) {
-          v = coords[sub.axes[src.axis_pos]][k[src.axis_pos]];
-        } else {
-          std::size_t idx = 0;
-          for (std::size_t a = 0; a < k.size(); ++a) idx += k[a] * src.stride[a];
-          v = src.table[idx];
-        }
-        in[s * kBlock + i] = v;
-      }
-      for (std::size_t a = 0; a < k.size() && ++k[a] == sub.dims[a]; ++a) k[a] = 0;
+    for (std::size_t s = 0; s < n_in; ++s) {
+      k_next = k;
+      gather(sources[s].values, sources[s].stride, sub, k_next, n, in.data() + s * kBlock, 1);
     }
+    if (n_in == 0)  // still advance to the next block
+      for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t a = 0; a < k.size() && ++k[a] == sub.dims[a]; ++a) k[a] = 0;
+    else
+      k = k_next;
     for (std::size_t s = 0; s < n_in; ++s) in_ptr[s] = in.data() + s * kBlock;
     for (std::size_t j = 0; j < outputs.size(); ++j) out_ptr[j] = outputs[j] + p0;
     ev.eval(tape, in_ptr, n, out_ptr);
@@ -207,16 +227,15 @@ std::vector<double> evaluate_plain(const Fn& f, const Lattice& lattice, LatticeS
   const std::uint64_t all = lattice.num_axes() == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << lattice.num_axes()) - 1;
   const SubLattice sub = sub_lattice(lattice, all);
   const Tape tape(f);
+  const std::vector<std::vector<double>> coords = coordinate_values(lattice);
   std::vector<Source> sources;
-  for (int c : tape.inputs()) {
-    const std::size_t axis = axis_of(lattice, c);
-    sources.push_back(Source{axis, nullptr, {}});  // sub has every axis: position == axis
-  }
+  for (int c : tape.inputs())  // sub has every axis: position == axis
+    sources.push_back(coordinate_source(coords, sub, axis_of(lattice, c)));
   std::vector<double> out(m * sub.size);
   std::vector<double*> out_ptr(m);
   for (std::size_t j = 0; j < m; ++j) out_ptr[j] = out.data() + j * sub.size;
   BatchEvaluator ev;
-  run_stage(tape, sub, coordinate_values(lattice), sources, out_ptr, ev);
+  run_stage(tape, sub, sources, out_ptr, ev);
   count_ops(tape, sub.size, stats);
   std::vector<double> result(m * sub.size);
   for (std::size_t p = 0; p < sub.size; ++p)
@@ -322,7 +341,7 @@ std::vector<double> evaluate_tables(const Fn& f, const Lattice& lattice, Lattice
       const int c = lattice.axes()[table.sub.axes[pos]].coordinate;
       if (stage_inputs & (std::uint64_t{1} << c)) {
         tape_inputs.push_back(c);
-        sources.push_back(Source{pos, nullptr, {}});
+        sources.push_back(coordinate_source(coords, table.sub, pos));
       }
     }
     if (ok) {
@@ -332,7 +351,7 @@ std::vector<double> evaluate_tables(const Fn& f, const Lattice& lattice, Lattice
         const auto [t, slot] = where.at(placeholders[k]);
         const Table& src = tables[t];
         tape_inputs.push_back(c);
-        sources.push_back(Source{0, src.values.data() + slot * src.sub.size, table_strides(src.sub, table.sub)});
+        sources.push_back(Source{src.values.data() + slot * src.sub.size, table_strides(src.sub, table.sub)});
       }
     } else {
       ++stats.fallback_stages;
@@ -341,7 +360,7 @@ std::vector<double> evaluate_tables(const Fn& f, const Lattice& lattice, Lattice
     table.values.resize(outs.size() * table.sub.size);
     std::vector<double*> out_ptr(outs.size());
     for (std::size_t j = 0; j < outs.size(); ++j) out_ptr[j] = table.values.data() + j * table.sub.size;
-    run_stage(tape, table.sub, coords, sources, out_ptr, ev);
+    run_stage(tape, table.sub, sources, out_ptr, ev);
     count_ops(tape, table.sub.size, stats);
     ++stats.tables;
     stats.table_entries += table.values.size();
@@ -357,30 +376,16 @@ std::vector<double> evaluate_tables(const Fn& f, const Lattice& lattice, Lattice
   for (std::size_t j = 0; j < m; ++j) {
     const NodeId c = f.node(j);
     const Node& n = dag::node(c);
-    const double* values = nullptr;
-    std::vector<std::size_t> stride(full.axes.size(), 0);
-    std::size_t var_axis = 0;
+    std::vector<std::size_t> k(full.axes.size(), 0);
     if (tabulable(n)) {
       const auto [t, slot] = where.at(c);
-      values = tables[t].values.data() + slot * tables[t].sub.size;
-      stride = table_strides(tables[t].sub, full);
+      gather(tables[t].values.data() + slot * tables[t].sub.size, table_strides(tables[t].sub, full), full, k,
+             total, result.data() + j, m);
     } else if (n.op == Op::Var) {
-      var_axis = axis_of(lattice, n.index);
-    }
-    std::vector<std::size_t> k(full.axes.size(), 0);
-    for (std::size_t p = 0; p < total; ++p) {
-      double v;
-      if (values != nullptr) {
-        std::size_t idx = 0;
-        for (std::size_t a = 0; a < k.size(); ++a) idx += k[a] * stride[a];
-        v = values[idx];
-      } else if (n.op == Op::Var) {
-        v = coords[var_axis][k[var_axis]];
-      } else {
-        v = n.value;
-      }
-      result[p * m + j] = v;
-      for (std::size_t a = 0; a < k.size() && ++k[a] == full.dims[a]; ++a) k[a] = 0;
+      const Source src = coordinate_source(coords, full, axis_of(lattice, n.index));
+      gather(src.values, src.stride, full, k, total, result.data() + j, m);
+    } else {
+      for (std::size_t p = 0; p < total; ++p) result[p * m + j] = n.value;
     }
   }
   return result;
