@@ -3,6 +3,7 @@
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
 #include <cctype>
@@ -14,6 +15,17 @@ namespace genmod {
 namespace {
 
 using OMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+// OpenMesh's readers and writers chat on its log stream ("[OBJWriter] : write file") on
+// stderr; a library must not. Its error stream stays on, and failures are reported by the
+// exceptions below.
+void silence_openmesh_log() {
+  static const bool silenced = [] {
+    omlog().disable();
+    return true;
+  }();
+  (void)silenced;
+}
 
 void check_axis(const LatticeAxis& a, bool periodic, const char* name) {
   const std::size_t min_samples = periodic ? 3 : 2;
@@ -91,6 +103,7 @@ void write_mesh(const Mesh& mesh, const std::filesystem::path& path) {
   if (!std::filesystem::is_directory(dir, ec))
     throw std::runtime_error("genmod: write_mesh: cannot write '" + path.string() + "': directory '" +
                              dir.string() + "' does not exist");
+  silence_openmesh_log();
   OpenMesh::IO::Options opt;
   if (ext == ".stl") {
     om.request_face_normals();
@@ -105,6 +118,7 @@ Mesh read_mesh(const std::filesystem::path& path) {
   OMesh om;
   if (!std::filesystem::exists(path))
     throw std::runtime_error("genmod: read_mesh: '" + path.string() + "' does not exist");
+  silence_openmesh_log();
   if (!OpenMesh::IO::read_mesh(om, path.string()))
     throw std::runtime_error("genmod: read_mesh: cannot read '" + path.string() + "' as a mesh");
   Mesh mesh;
