@@ -84,11 +84,15 @@ double brent(F&& f, double a, double b, double tol) {
 
 class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp> {
  public:
-  InverseOp(Fn f, int bound, std::vector<int> free, Interval domain, double epsilon)
+  // F = invert_t - match: invert_t is invert with x(parameter) := x(bound).
+  InverseOp(const Fn& invert_t, const Fn& match, int bound, std::vector<int> free, Interval domain, double epsilon)
       : bound_(bound), free_(std::move(free)), domain_(domain), epsilon_(epsilon) {
     inputs_.push_back(bound_);
     inputs_.insert(inputs_.end(), free_.begin(), free_.end());
+    const Fn f = invert_t - match;
     tape_ = std::make_shared<const Tape>(f, inputs_);
+    invert_tape_ = std::make_shared<const Tape>(invert_t, inputs_);
+    match_tape_ = std::make_shared<const Tape>(match, inputs_);
     const Fn dt = genmod::derivative(f, bound_);
     for (int c : free_) partials_.push_back(-genmod::derivative(f, c) / dt);
     constraint_ = eq(f, 0.0);
@@ -102,9 +106,14 @@ class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp
     PointEvaluator ev;
     std::vector<double> point(inputs_.size());
     std::copy(args.begin(), args.end(), point.begin() + 1);
+    // match does not depend on t: evaluate it once, not at every step of the root finder
+    // (it may itself hold nested operators). F(t) is the same subtraction of the same two
+    // values as in tape_, so the result is bitwise that of evaluating F.
+    point[0] = domain_.lo();
+    const double match = ev.eval(*match_tape_, point)[0];
     auto f = [&](double t) {
       point[0] = t;
-      return ev.eval(*tape_, point)[0];
+      return ev.eval(*invert_tape_, point)[0] - match;
     };
     out[0] = brent(f, domain_.lo(), domain_.hi(), epsilon_);
   }
@@ -175,6 +184,7 @@ class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp
   Interval domain_;
   double epsilon_;
   std::shared_ptr<const Tape> tape_;  // F(t, free)
+  std::shared_ptr<const Tape> invert_tape_, match_tape_;  // its two terms, for point evaluation
   std::vector<Fn> partials_;          // dR/d free_k as functions of (t, free)
   Fn constraint_;                     // F == 0
 };
@@ -206,8 +216,8 @@ Fn inverse(const Fn& invert, const Fn& match, int parameter, Interval domain, do
   std::vector<int> free;
   for (int i = 0; i < kMaxInputs; ++i)
     if (free_mask & (std::uint64_t{1} << i)) free.push_back(i);
-  const Fn f = compose(invert, parameter, x(scratch)) - match;
-  auto op = std::make_shared<const InverseOp>(f, scratch, free, domain, epsilon);
+  auto op = std::make_shared<const InverseOp>(compose(invert, parameter, x(scratch)), match, scratch, free, domain,
+                                              epsilon);
   std::vector<Fn> args;
   for (int c : free) args.push_back(x(c));
   return apply_custom(op, args);
