@@ -111,13 +111,19 @@ std::vector<std::size_t> table_strides(const SubLattice& table, const SubLattice
   return stride;
 }
 
-// out[i * out_step] = values[index(k_i)] for the n points of `sub` from multi-index k on (the
-// first axis fastest), advancing k past them. The index is updated incrementally, an
-// odometer over the axes, so a gather costs a few adds per value.
-void gather(const double* values, const std::vector<std::size_t>& stride, const SubLattice& sub,
-            std::vector<std::size_t>& k, std::size_t n, double* out, std::size_t out_step) {
+// out[i * out_step] = values[index(k)] for the n points of `sub` from point p0 on (the first
+// axis fastest), index(k) = sum_a k[a] stride[a] for the multi-index k of the point. The
+// index is updated incrementally, an odometer over the axes, so a gather costs a few adds
+// per value.
+void gather(const double* values, const std::vector<std::size_t>& stride, const SubLattice& sub, std::size_t p0,
+            std::size_t n, double* out, std::size_t out_step) {
+  std::vector<std::size_t> k(sub.axes.size());
   std::size_t idx = 0;
-  for (std::size_t a = 0; a < k.size(); ++a) idx += k[a] * stride[a];
+  for (std::size_t a = 0; a < k.size(); ++a) {
+    k[a] = p0 % sub.dims[a];
+    p0 /= sub.dims[a];
+    idx += k[a] * stride[a];
+  }
   for (std::size_t i = 0; i < n; ++i) {
     out[i * out_step] = values[idx];
     for (std::size_t a = 0; a < k.size(); ++a) {
@@ -144,18 +150,10 @@ void run_stage(const Tape& tape, const SubLattice& sub, const std::vector<Source
   std::vector<double> in(n_in * kBlock);
   std::vector<const double*> in_ptr(n_in);
   std::vector<double*> out_ptr(outputs.size());
-  std::vector<std::size_t> k(sub.axes.size(), 0), k_next;
   for (std::size_t p0 = 0; p0 < sub.size; p0 += kBlock) {
     const std::size_t n = std::min(kBlock, sub.size - p0);
-    for (std::size_t s = 0; s < n_in; ++s) {
-      k_next = k;
-      gather(sources[s].values, sources[s].stride, sub, k_next, n, in.data() + s * kBlock, 1);
-    }
-    if (n_in == 0)  // still advance to the next block
-      for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t a = 0; a < k.size() && ++k[a] == sub.dims[a]; ++a) k[a] = 0;
-    else
-      k = k_next;
+    for (std::size_t s = 0; s < n_in; ++s)
+      gather(sources[s].values, sources[s].stride, sub, p0, n, in.data() + s * kBlock, 1);
     for (std::size_t s = 0; s < n_in; ++s) in_ptr[s] = in.data() + s * kBlock;
     for (std::size_t j = 0; j < outputs.size(); ++j) out_ptr[j] = outputs[j] + p0;
     ev.eval(tape, in_ptr, n, out_ptr);
@@ -376,14 +374,13 @@ std::vector<double> evaluate_tables(const Fn& f, const Lattice& lattice, Lattice
   for (std::size_t j = 0; j < m; ++j) {
     const NodeId c = f.node(j);
     const Node& n = dag::node(c);
-    std::vector<std::size_t> k(full.axes.size(), 0);
     if (tabulable(n)) {
       const auto [t, slot] = where.at(c);
-      gather(tables[t].values.data() + slot * tables[t].sub.size, table_strides(tables[t].sub, full), full, k,
+      gather(tables[t].values.data() + slot * tables[t].sub.size, table_strides(tables[t].sub, full), full, 0,
              total, result.data() + j, m);
     } else if (n.op == Op::Var) {
       const Source src = coordinate_source(coords, full, axis_of(lattice, n.index));
-      gather(src.values, src.stride, full, k, total, result.data() + j, m);
+      gather(src.values, src.stride, full, 0, total, result.data() + j, m);
     } else {
       for (std::size_t p = 0; p < total; ++p) result[p * m + j] = n.value;
     }

@@ -6,6 +6,9 @@
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
 #include "genmod/operators/curve.hpp"
+#include "genmod/operators/vector.hpp"
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
@@ -55,6 +58,21 @@ class Eval {
 
 // Sample parameters in [0, 1], both ends included.
 inline const std::vector<double> kSamples{0.0, 0.013, 0.21, 0.37, 0.5, 0.618, 0.83, 0.97, 1.0};
+
+// Claim 28 for a wire product S of the cross section g(u, v) along the planar wire d(v)
+// (both given in (x(0), x(1))), at every pair of kSamples: the section is perpendicular to
+// the wire, (S - (d, 0)) . (t, 0) = 0 with t = d'/|d'|; |S_xy - d| = |g1|; S_z = g2.
+inline void expect_wire_product(const Fn& surface, const Fn& cross, const Fn& wire) {
+  Eval s(surface), g(cross), d(wire), t(normalize(derivative(wire, 1)));
+  for (double u : kSamples)
+    for (double v : kSamples) {
+      const auto S = s({u, v}), G = g({u, v}), D = d({u, v}), T = t({u, v});
+      const double dx = S[0] - D[0], dy = S[1] - D[1];
+      EXPECT_NEAR(dx * T[0] + dy * T[1], 0.0, 1e-12) << u << ", " << v;
+      EXPECT_NEAR(std::hypot(dx, dy), std::abs(G[0]), 1e-12) << u << ", " << v;
+      EXPECT_NEAR(S[2], G[1], 1e-15) << u << ", " << v;
+    }
+}
 
 // The message of the std::invalid_argument that f() throws, or "(no exception)".
 template <typename F>

@@ -129,16 +129,8 @@ TEST(TimeVaryingCurve, EveryTimeSliceHasArclengthLambda) {
 TEST(Wing, IsAWireProductAlongTheCurveAtItsTime) {
   const Model& m = find_model("wing");
   const ParameterValues p = resolve_parameters(m);
-  Eval s(m.build(p)), cross(wing_cross(p)), wire(wing_wire(p));
-  Eval tangent(normalize(derivative(wing_wire(p), 1)));
-  for (double u : kSamples)
-    for (double v : kSamples) {
-      const auto S = s({u, v}), g = cross({u, v}), d = wire({0.0, v}), t = tangent({0.0, v});
-      const double dx = S[0] - d[0], dy = S[1] - d[1];
-      EXPECT_NEAR(dx * t[0] + dy * t[1], 0.0, 1e-12) << u << ", " << v;
-      EXPECT_NEAR(std::hypot(dx, dy), std::abs(g[0]), 1e-12) << u << ", " << v;
-      EXPECT_NEAR(S[2], g[1], 1e-15) << u << ", " << v;
-    }
+  expect_wire_product(m.build(p), wing_cross(p), wing_wire(p));
+  Eval s(m.build(p)), wire(wing_wire(p));
   // The spar is the time-varying curve's slice at the wing's time: same points, span lambda.
   const double time = p.at("time");
   Eval slice(build_model(find_model("time_varying_curve")));
