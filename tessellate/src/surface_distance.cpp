@@ -1,0 +1,152 @@
+// Distance of a mesh from the surface f = 0 (validate.hpp, SurfaceDistance).
+#include "validate_internal.hpp"
+
+#include "genmod/kernel/gradient_evaluator.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_reduce.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace genmod::validation {
+namespace {
+
+struct Result {
+  double bound = -1.0;     // certified upper bound, < 0 when none was found
+  double estimate = 0.0;   // |f| / |grad f|
+};
+
+struct Evaluators {
+  PointEvaluator point;
+  GradientEvaluator gradient;
+};
+
+// Looks for a sign change of f along the descent direction from p (see validate.hpp).
+Result distance_at(const Tape& tape, Evaluators& ev, const std::array<double, 3>& p, double search_radius) {
+  Result r;
+  ev.gradient.eval(tape, p);
+  const double f = ev.gradient.values()[0];
+  const auto g = ev.gradient.jacobian();
+  if (f == 0.0) {
+    r.bound = 0.0;
+    return r;
+  }
+  const double gn = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  if (!std::isfinite(f) || !std::isfinite(gn) || gn == 0.0) {
+    r.estimate = std::numeric_limits<double>::infinity();
+    return r;
+  }
+  r.estimate = std::fabs(f) / gn;
+  const double s = f > 0 ? -1.0 / gn : 1.0 / gn;
+  const double dir[3] = {s * g[0], s * g[1], s * g[2]};
+  // Steps slightly past the first-order estimate, then growing geometrically.
+  static constexpr double kFactors[] = {1.0 + 1e-9, 1.0 + 1e-6, 1.001, 1.01, 1.1, 1.5, 2.0, 3.0, 5.0, 8.0, 13.0};
+  for (double factor : kFactors) {
+    const double t = r.estimate * factor;
+    if (t > search_radius && factor > 1.1) break;
+    const double q[3] = {p[0] + t * dir[0], p[1] + t * dir[1], p[2] + t * dir[2]};
+    const double fq = ev.point.eval(tape, q)[0];
+    if (fq == 0.0 || (fq > 0) != (f > 0)) {
+      // |q - p| as evaluated (dir is a unit vector up to rounding).
+      const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+      r.bound = std::sqrt(dx * dx + dy * dy + dz * dz);
+      return r;
+    }
+  }
+  return r;
+}
+
+// Barycentric sample k of `count` inside a triangle: the centroid first, then a Kronecker
+// sequence folded into the triangle.
+std::array<double, 3> sample_weights(int k) {
+  if (k == 0) return {1.0 / 3, 1.0 / 3, 1.0 / 3};
+  double u = std::fmod(0.5 + k * 0.7548776662466927, 1.0);
+  double v = std::fmod(0.5 + k * 0.5698402909980532, 1.0);
+  if (u + v > 1.0) {
+    u = 1.0 - u;
+    v = 1.0 - v;
+  }
+  return {1.0 - u - v, u, v};
+}
+
+struct Accumulator {
+  double max_vertex_bound = 0, max_vertex_estimate = 0, max_face_bound = 0, max_face_estimate = 0;
+  double sum_face_estimate = 0;
+  std::size_t face_points = 0, uncertified = 0;
+
+  void add(const Result& r, bool vertex) {
+    if (r.bound < 0) ++uncertified;
+    double& bound = vertex ? max_vertex_bound : max_face_bound;
+    double& estimate = vertex ? max_vertex_estimate : max_face_estimate;
+    if (r.bound > bound) bound = r.bound;
+    if (r.estimate > estimate) estimate = r.estimate;
+    if (!vertex) {
+      sum_face_estimate += r.estimate;
+      ++face_points;
+    }
+  }
+  void join(const Accumulator& o) {
+    max_vertex_bound = std::max(max_vertex_bound, o.max_vertex_bound);
+    max_vertex_estimate = std::max(max_vertex_estimate, o.max_vertex_estimate);
+    max_face_bound = std::max(max_face_bound, o.max_face_bound);
+    max_face_estimate = std::max(max_face_estimate, o.max_face_estimate);
+    sum_face_estimate += o.sum_face_estimate;
+    face_points += o.face_points;
+    uncertified += o.uncertified;
+  }
+};
+
+}  // namespace
+
+SurfaceDistance measure_surface_distance(const Mesh& mesh, const Tape& surface, int face_samples,
+                                         double search_radius, int threads) {
+  const std::size_t nv = mesh.vertices.size(), nt = mesh.triangles.size();
+  const std::size_t n = nv + nt * static_cast<std::size_t>(face_samples);
+  tbb::enumerable_thread_specific<Evaluators> evaluators;
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  // Fixed-size chunks joined in order: the sums are the same for any thread count.
+  const Accumulator acc = arena.execute([&] {
+    return tbb::parallel_deterministic_reduce(
+        tbb::blocked_range<std::size_t>(0, n, 4096), Accumulator{},
+        [&](const tbb::blocked_range<std::size_t>& range, Accumulator a) {
+          Evaluators& ev = evaluators.local();
+          for (std::size_t i = range.begin(); i != range.end(); ++i) {
+            if (i < nv) {
+              a.add(distance_at(surface, ev, mesh.vertices[i], search_radius), true);
+              continue;
+            }
+            const std::size_t t = (i - nv) / static_cast<std::size_t>(face_samples);
+            const int k = static_cast<int>((i - nv) % static_cast<std::size_t>(face_samples));
+            const auto w = sample_weights(k);
+            const auto& tri = mesh.triangles[t];
+            if (tri[0] >= nv || tri[1] >= nv || tri[2] >= nv) continue;  // reported by validate
+            std::array<double, 3> p{};
+            for (int d = 0; d < 3; ++d)
+              p[d] = w[0] * mesh.vertices[tri[0]][d] + w[1] * mesh.vertices[tri[1]][d] +
+                     w[2] * mesh.vertices[tri[2]][d];
+            a.add(distance_at(surface, ev, p, search_radius), false);
+          }
+          return a;
+        },
+        [](Accumulator a, const Accumulator& b) {
+          a.join(b);
+          return a;
+        });
+  });
+  SurfaceDistance d;
+  d.points = n;
+  d.max_vertex_bound = acc.max_vertex_bound;
+  d.max_vertex_estimate = acc.max_vertex_estimate;
+  d.max_face_bound = acc.max_face_bound;
+  d.max_face_estimate = acc.max_face_estimate;
+  d.mean_face_estimate = acc.face_points ? acc.sum_face_estimate / static_cast<double>(acc.face_points) : 0.0;
+  d.uncertified = acc.uncertified;
+  return d;
+}
+
+}  // namespace genmod::validation
