@@ -2,7 +2,9 @@
 #pragma once
 
 #include "genmod/tessellate/image.hpp"
+#include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/lattice.hpp"
 #include "genmod/tessellate/mesh.hpp"
 #include "genmod/tessellate/png_io.hpp"
 #include "genmod/tessellate/raster2d.hpp"
+#include "genmod/tessellate/validate.hpp"

@@ -1,0 +1,727 @@
+#include "implicit/cell_mesher.hpp"
+
+#include "implicit/qef.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace genmod::implicit {
+namespace {
+
+Vec3 lerp(const Vec3& a, const Vec3& b, double t) {
+  // Coordinates equal at both ends stay exact (points on a face plane stay on it).
+  return {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+}
+
+double distance(const Vec3& a, const Vec3& b) {
+  const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+
+bool is_inside(double g) { return g < 0.0; }  // NaN (an error) counts as outside
+
+using Point2 = std::array<double, 2>;
+
+double cross2(const Point2& o, const Point2& a, const Point2& b) {
+  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+// Strictly inside the convex polygon, at least `margin` from every edge line.
+bool inside_convex(const Point2& q, std::span<const Point2> p, double margin) {
+  double area = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) area += cross2(p[0], p[i], p[(i + 1) % p.size()]);
+  const double s = area > 0 ? 1.0 : -1.0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Point2& a = p[i];
+    const Point2& b = p[(i + 1) % p.size()];
+    const double len = std::hypot(b[0] - a[0], b[1] - a[1]);
+    if (len == 0) continue;
+    if (!(s * cross2(a, b, q) > margin * len)) return false;
+  }
+  return true;
+}
+
+// The largest t with q + t d in the convex polygon (q inside it).
+double exit_parameter(const Point2& q, const Point2& d, std::span<const Point2> p) {
+  double area = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) area += cross2(p[0], p[i], p[(i + 1) % p.size()]);
+  const double s = area > 0 ? 1.0 : -1.0;
+  double t = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    const Point2& a = p[i];
+    const Point2& b = p[(i + 1) % p.size()];
+    // Inward normal of edge a -> b.
+    const Point2 n{-s * (b[1] - a[1]), s * (b[0] - a[0])};
+    const double along = n[0] * d[0] + n[1] * d[1];
+    if (along < 0) t = std::min(t, (n[0] * (q[0] - a[0]) + n[1] * (q[1] - a[1])) / -along);
+  }
+  return t;
+}
+
+}  // namespace
+
+CellMesher::Region CellMesher::cell_region() const {
+  return {{cell_lo_[0], cell_lo_[1], cell_lo_[2]}, {cell_hi_[0], cell_hi_[1], cell_hi_[2]}};
+}
+
+void CellMesher::mesh(const Cell& cell, CellOutput& out) {
+  out = CellOutput{};
+  tapes_ = &ctx_.octree->tapes(cell);
+  const std::uint32_t s = cell.size();
+  const Vec3 lo = ctx_.frame->point(cell.corner);
+  const Vec3 hi = ctx_.frame->point({cell.corner[0] + s, cell.corner[1] + s, cell.corner[2] + s});
+  for (int k = 0; k < 3; ++k) {
+    cell_lo_[k] = lo[k];
+    cell_hi_[k] = hi[k];
+  }
+  cell_size_ = hi[0] - lo[0];
+  gather_pieces(cell);
+  std::vector<Vec3> points(sample_keys_.size());
+  for (std::size_t i = 0; i < points.size(); ++i) points[i] = ctx_.frame->point(sample_keys_[i]);
+  evaluate(points, sample_g_);
+  choose_modes(out);
+
+  std::vector<Segment> segments;
+  trace(polygons_, polygon_keys_, out, segments);
+
+  // Chain the segments into loops: every trace vertex starts one segment and ends one.
+  std::vector<std::uint32_t> next(out.vertices.size(), kNone);
+  for (const Segment& seg : segments) {
+    if (next[seg.from] != kNone) throw std::logic_error("genmod: mesh_implicit: a trace vertex starts two segments");
+    next[seg.from] = seg.to;
+  }
+  std::vector<std::vector<std::uint32_t>> loops;
+  std::vector<char> seen(out.vertices.size(), 0);
+  for (const Segment& seg : segments) {
+    if (seen[seg.from]) continue;
+    std::vector<std::uint32_t> loop;
+    for (std::uint32_t v = seg.from; !seen[v]; v = next[v]) {
+      if (next[v] == kNone) throw std::logic_error("genmod: mesh_implicit: the trace of a cell is not closed");
+      seen[v] = 1;
+      loop.push_back(v);
+    }
+    loops.push_back(std::move(loop));
+  }
+  if (loops.size() <= 1) out.direct_pieces.clear();  // only a fallback needs them as fans
+  if (loops.empty()) return;
+  if (loops.size() == 1) {
+    cone(cell, loops[0], out);
+    return;
+  }
+  std::vector<PieceId> direct = std::move(out.direct_pieces);
+  out = CellOutput{};
+  out.multi_loop = true;
+  out.wants_split = true;
+  if (!direct.empty()) {
+    out.direct_pieces = std::move(direct);  // meshed again once these are fans
+    return;
+  }
+  tetrahedra(cell, out);
+}
+
+void CellMesher::gather_pieces(const Cell& cell) {
+  const Octree& tree = *ctx_.octree;
+  pieces_.clear();
+  boundary_.clear();
+  sample_keys_.clear();
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (int side : {-1, 1}) {
+      const std::uint32_t w = cell.corner[axis] + (side > 0 ? cell.size() : 0);
+      tree.face_pieces(cell, axis, side, rects_);
+      for (const auto& rect : rects_) {
+        auto at = [&](std::uint32_t pu, std::uint32_t pv) {
+          std::array<std::uint32_t, 3> q{};
+          q[axis] = w;
+          q[u] = pu;
+          q[v] = pv;
+          return q;
+        };
+        const std::uint32_t u0 = rect[0], v0 = rect[1], u1 = rect[2], v1 = rect[3];
+        Piece p;
+        p.axis = axis;
+        p.center = pack(at((u0 + u1) / 2, (v0 + v1) / 2));
+        p.region = {ctx_.frame->point(at(u0, v0)), ctx_.frame->point(at(u1, v1))};
+        p.first = static_cast<std::uint32_t>(boundary_.size());
+        p.fan = false;
+        // Counter-clockwise in (u, v), i.e. seen from +axis; reversed below for side -1.
+        boundary_.push_back(pack(at(u0, v0)));
+        tree.points_on_segment(u, at(u0, v0), u0, u1, line_points_);
+        for (std::uint32_t t : line_points_) boundary_.push_back(pack(at(t, v0)));
+        boundary_.push_back(pack(at(u1, v0)));
+        tree.points_on_segment(v, at(u1, v0), v0, v1, line_points_);
+        for (std::uint32_t t : line_points_) boundary_.push_back(pack(at(u1, t)));
+        boundary_.push_back(pack(at(u1, v1)));
+        tree.points_on_segment(u, at(u0, v1), u0, u1, line_points_);
+        for (auto it = line_points_.rbegin(); it != line_points_.rend(); ++it) boundary_.push_back(pack(at(*it, v1)));
+        boundary_.push_back(pack(at(u0, v1)));
+        tree.points_on_segment(v, at(u0, v0), v0, v1, line_points_);
+        for (auto it = line_points_.rbegin(); it != line_points_.rend(); ++it) boundary_.push_back(pack(at(u0, *it)));
+        p.count = static_cast<std::uint32_t>(boundary_.size()) - p.first;
+        if (side < 0) std::reverse(boundary_.begin() + p.first, boundary_.end());
+        sample_keys_.push_back(p.center);
+        sample_keys_.insert(sample_keys_.end(), boundary_.begin() + p.first, boundary_.end());
+        pieces_.push_back(p);
+      }
+    }
+  }
+  const std::uint32_t h = cell.size() / 2;
+  sample_keys_.push_back(pack(cell.corner[0] + h, cell.corner[1] + h, cell.corner[2] + h));
+  std::sort(sample_keys_.begin(), sample_keys_.end());
+  sample_keys_.erase(std::unique(sample_keys_.begin(), sample_keys_.end()), sample_keys_.end());
+}
+
+double CellMesher::sample(Key k) const {
+  const auto it = std::lower_bound(sample_keys_.begin(), sample_keys_.end(), k);
+  if (it == sample_keys_.end() || *it != k) throw std::logic_error("genmod: mesh_implicit: a sample is missing");
+  return sample_g_[static_cast<std::size_t>(it - sample_keys_.begin())];
+}
+
+bool CellMesher::inside(Key k) const { return is_inside(sample(k)); }
+
+void CellMesher::add_fan_triangles(const Piece& p, std::vector<Polygon>& polygons, std::vector<Key>& keys) const {
+  for (std::uint32_t i = 0; i < p.count; ++i) {
+    const Key b0 = boundary_[p.first + i], b1 = boundary_[p.first + (i + 1) % p.count];
+    Polygon t;
+    t.first = static_cast<std::uint32_t>(keys.size());
+    t.count = 3;
+    t.axis = p.axis;
+    t.outer = true;
+    t.feature_key = {VertexKind::FacePoint, p.center, std::min(b0, b1), std::max(b0, b1)};
+    t.region = p.region;
+    keys.insert(keys.end(), {p.center, b0, b1});
+    polygons.push_back(t);
+  }
+}
+
+void CellMesher::choose_modes(CellOutput& out) {
+  polygons_.clear();
+  polygon_keys_.clear();
+  for (Piece& p : pieces_) {
+    int crossings = 0;
+    for (std::uint32_t i = 0; i < p.count; ++i)
+      crossings += inside(boundary_[p.first + i]) != inside(boundary_[p.first + (i + 1) % p.count]);
+    const bool forced = std::binary_search(ctx_.fan_pieces->begin(), ctx_.fan_pieces->end(),
+                                           PieceId{p.center, static_cast<std::uint8_t>(p.axis)});
+    if (crossings == 0) {
+      // Only the center can show an island inside the piece.
+      p.fan = inside(p.center) != inside(boundary_[p.first]);
+    } else {
+      p.fan = forced || crossings != 2;
+    }
+    if (p.fan) {
+      add_fan_triangles(p, polygons_, polygon_keys_);
+    } else if (crossings == 2) {
+      Polygon d;
+      d.first = static_cast<std::uint32_t>(polygon_keys_.size());
+      d.count = p.count;
+      d.axis = p.axis;
+      d.outer = true;
+      d.feature_key = {VertexKind::FacePoint, p.center, kNoKey, static_cast<Key>(p.axis)};
+      d.region = p.region;
+      polygon_keys_.insert(polygon_keys_.end(), boundary_.begin() + p.first, boundary_.begin() + p.first + p.count);
+      polygons_.push_back(d);
+      out.direct_pieces.push_back({p.center, static_cast<std::uint8_t>(p.axis)});
+    }
+  }
+}
+
+void CellMesher::evaluate(std::span<const Vec3> points, std::vector<double>& g, std::vector<double>* f) {
+  const std::size_t n = points.size();
+  xs_.resize(n);
+  ys_.resize(n);
+  zs_.resize(n);
+  fs_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    xs_[i] = points[i][0];
+    ys_[i] = points[i][1];
+    zs_[i] = points[i][2];
+  }
+  const double* in[3] = {xs_.data(), ys_.data(), zs_.data()};
+  double* outp[1] = {fs_.data()};
+  if (n > 0) batch_.eval(tapes_->value, in, n, outp);
+  g.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double c = ctx_.frame->clip(points[i]);
+    g[i] = std::isnan(fs_[i]) ? fs_[i] : std::max(fs_[i], c);
+  }
+  if (f) f->assign(fs_.begin(), fs_.end());
+}
+
+void CellMesher::normals(std::span<const Vec3> points, std::span<const double> f, std::span<const Region> regions,
+                         std::vector<Vec3>& out, std::vector<double>* lengths, std::vector<char>* symbolic) {
+  const std::size_t n = points.size();
+  xs_.resize(n);
+  ys_.resize(n);
+  zs_.resize(n);
+  gx_.resize(n);
+  gy_.resize(n);
+  gz_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    xs_[i] = points[i][0];
+    ys_[i] = points[i][1];
+    zs_[i] = points[i][2];
+  }
+  const double* in[3] = {xs_.data(), ys_.data(), zs_.data()};
+  double* outp[3] = {gx_.data(), gy_.data(), gz_.data()};
+  if (n > 0) batch_.eval(tapes_->gradient, in, n, outp);
+  out.resize(n);
+  if (lengths) lengths->assign(n, 0.0);
+  if (symbolic) symbolic->assign(n, 1);
+  // Points whose symbolic gradient is unusable (a formula like |max(q, 0)| has 0/0 in its
+  // derivative where it is flat) get central differences.
+  std::vector<std::uint32_t> fallback;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 g = f[i] >= ctx_.frame->clip(points[i]) ? Vec3{gx_[i], gy_[i], gz_[i]}
+                                                       : ctx_.frame->clip_gradient(points[i]);
+    const double len = std::sqrt(dot(g, g));
+    if (len > 0 && std::isfinite(len)) {
+      out[i] = {g[0] / len, g[1] / len, g[2] / len};
+      if (lengths) (*lengths)[i] = len;
+    } else {
+      fallback.push_back(static_cast<std::uint32_t>(i));
+    }
+  }
+  if (fallback.empty()) return;
+  fd_points_.clear();
+  std::vector<std::array<double, 3>> spans;  // per fallback point and axis: b - a (0 = no step)
+  for (std::uint32_t i : fallback) {
+    const Region& r = regions.size() == 1 ? regions[0] : regions[i];
+    // The step depends on the region only, so cells sharing a face piece agree.
+    const double step = 1e-6 * std::max({r.hi[0] - r.lo[0], r.hi[1] - r.lo[1], r.hi[2] - r.lo[2]});
+    std::array<double, 3> sp{};
+    for (int k = 0; k < 3; ++k) {
+      Vec3 a = points[i], b = points[i];
+      a[k] = std::clamp(a[k] - step, r.lo[k], r.hi[k]);
+      b[k] = std::clamp(b[k] + step, r.lo[k], r.hi[k]);
+      sp[static_cast<std::size_t>(k)] = b[k] - a[k];
+      fd_points_.push_back(a);
+      fd_points_.push_back(b);
+    }
+    spans.push_back(sp);
+  }
+  evaluate(fd_points_, fd_g_);
+  for (std::size_t j = 0; j < fallback.size(); ++j) {
+    const std::uint32_t i = fallback[j];
+    Vec3 g{0, 0, 0};
+    for (int k = 0; k < 3; ++k) {
+      const double d = fd_g_[6 * j + 2 * static_cast<std::size_t>(k) + 1] - fd_g_[6 * j + 2 * static_cast<std::size_t>(k)];
+      if (spans[j][static_cast<std::size_t>(k)] > 0 && std::isfinite(d)) g[k] = d / spans[j][static_cast<std::size_t>(k)];
+    }
+    const double len = std::sqrt(dot(g, g));
+    const bool ok = len > 0 && std::isfinite(len);
+    out[i] = ok ? Vec3{g[0] / len, g[1] / len, g[2] / len} : Vec3{0, 0, 0};
+    if (lengths) (*lengths)[i] = ok ? len : 0.0;
+    if (symbolic) (*symbolic)[i] = 0;
+  }
+}
+
+void CellMesher::find_roots(std::span<const Vec3> a, std::span<const Vec3> b, std::span<const double> ga,
+                            std::span<const double> gb, std::vector<double>& t, std::vector<double>& error) {
+  // Illinois (modified regula falsi) on all segments at once, with bisection when the outside
+  // value is an error or the bracket stops shrinking fast.
+  const std::size_t n = a.size();
+  std::vector<double> lo(n, 0.0), hi(n, 1.0), flo(ga.begin(), ga.end()), fhi(gb.begin(), gb.end());
+  std::vector<double> length(n), last_width(n, 2.0);
+  std::vector<int> side(n, 0);
+  std::vector<std::uint32_t> active;
+  for (std::size_t i = 0; i < n; ++i) {
+    length[i] = distance(a[i], b[i]);
+    if (length[i] > ctx_.root_tolerance) active.push_back(static_cast<std::uint32_t>(i));
+  }
+  std::vector<Vec3> trial_points;
+  std::vector<double> trial_t, trial_g;
+  std::vector<std::uint32_t> still;
+  for (int iteration = 0; iteration < 100 && !active.empty(); ++iteration) {
+    trial_points.clear();
+    trial_t.clear();
+    for (std::uint32_t i : active) {
+      const double w = hi[i] - lo[i];
+      double s = 0.5 * (lo[i] + hi[i]);
+      const bool regula = std::isfinite(fhi[i]) && w < 0.75 * last_width[i];
+      if (regula) {
+        const double r = lo[i] + w * (flo[i] / (flo[i] - fhi[i]));
+        if (r > lo[i] + 0.01 * w && r < hi[i] - 0.01 * w) s = r;
+      }
+      last_width[i] = regula ? w : 2.0 * w;  // after a bisection, regula falsi again
+      trial_t.push_back(s);
+      trial_points.push_back(lerp(a[i], b[i], s));
+    }
+    evaluate(trial_points, trial_g);
+    still.clear();
+    for (std::size_t k = 0; k < active.size(); ++k) {
+      const std::uint32_t i = active[k];
+      const double s = trial_t[k], v = trial_g[k];
+      if (is_inside(v)) {
+        lo[i] = s;
+        flo[i] = v;
+        if (side[i] == -1) fhi[i] *= 0.5;  // Illinois: halve the stale end
+        side[i] = -1;
+      } else {
+        hi[i] = s;
+        fhi[i] = v;
+        if (side[i] == 1) flo[i] *= 0.5;
+        side[i] = 1;
+      }
+      if ((hi[i] - lo[i]) * length[i] > ctx_.root_tolerance) still.push_back(i);
+    }
+    active.swap(still);
+  }
+  t.resize(n);
+  error.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    t[i] = 0.5 * (lo[i] + hi[i]);
+    error[i] = 0.5 * (hi[i] - lo[i]) * length[i];
+  }
+}
+
+std::uint32_t CellMesher::vertex(CellOutput& out, const VertexKey& key, const Vec3& p, double error) {
+  for (std::size_t i = 0; i < out.vertices.size(); ++i)
+    if (out.vertices[i].key == key) return static_cast<std::uint32_t>(i);
+  out.vertices.push_back({key, p, error});
+  return static_cast<std::uint32_t>(out.vertices.size() - 1);
+}
+
+void CellMesher::trace(const std::vector<Polygon>& polygons, const std::vector<Key>& keys, CellOutput& out,
+                       std::vector<Segment>& segments) {
+  const Frame& frame = *ctx_.frame;
+  auto key_at = [&](const Polygon& p, std::uint32_t i) { return keys[p.first + i % p.count]; };
+  // Polygon edges with a sign change, inside end first.
+  std::vector<Root> roots;
+  for (const Polygon& poly : polygons)
+    for (std::uint32_t j = 0; j < poly.count; ++j) {
+      const Key p = key_at(poly, j), q = key_at(poly, j + 1);
+      const bool ip = inside(p), iq = inside(q);
+      if (ip != iq) roots.push_back(ip ? Root{p, q} : Root{q, p});
+    }
+  std::sort(roots.begin(), roots.end());
+  roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+  const std::size_t nr = roots.size();
+  std::vector<Vec3> a(nr), b(nr);
+  std::vector<double> ga(nr), gb(nr), t, error;
+  for (std::size_t i = 0; i < nr; ++i) {
+    a[i] = frame.point(roots[i].in);
+    b[i] = frame.point(roots[i].out);
+    ga[i] = sample(roots[i].in);
+    gb[i] = sample(roots[i].out);
+  }
+  find_roots(a, b, ga, gb, t, error);
+  std::vector<Vec3> points(nr);
+  for (std::size_t i = 0; i < nr; ++i) points[i] = lerp(a[i], b[i], t[i]);
+  std::vector<double> g, f;
+  std::vector<Vec3> normal3;
+  std::vector<char> symbolic;
+  evaluate(points, g, &f);
+  const Region whole = cell_region();
+  normals(points, f, std::span(&whole, 1), normal3, nullptr, &symbolic);
+  std::vector<std::uint32_t> root_vertex(nr);
+  for (std::size_t i = 0; i < nr; ++i)
+    root_vertex[i] = vertex(out, {VertexKind::EdgePoint, roots[i].in, roots[i].out, 0}, points[i], error[i]);
+  normal_.assign(out.vertices.size(), Vec3{0, 0, 0});
+  for (std::size_t i = 0; i < nr; ++i) normal_[root_vertex[i]] = normal3[i];
+  auto root_of = [&](Key in, Key outk) {
+    return static_cast<std::uint32_t>(std::lower_bound(roots.begin(), roots.end(), Root{in, outk}) - roots.begin());
+  };
+
+  // Entry (outside -> inside, walking counter-clockwise) and exit roots of each polygon.
+  std::vector<std::array<std::uint32_t, 2>> crossing(polygons.size(), {kNone, kNone});
+  for (std::size_t pi = 0; pi < polygons.size(); ++pi) {
+    const Polygon& poly = polygons[pi];
+    for (std::uint32_t j = 0; j < poly.count; ++j) {
+      const Key p = key_at(poly, j), q = key_at(poly, j + 1);
+      const bool ip = inside(p), iq = inside(q);
+      if (ip == iq) continue;
+      std::uint32_t& slot = crossing[pi][ip ? 1 : 0];
+      if (slot != kNone) throw std::logic_error("genmod: mesh_implicit: a trace polygon has more than one segment");
+      slot = ip ? root_of(p, q) : root_of(q, p);
+    }
+  }
+
+  // Feature points: where the tangent lines at a segment's two ends meet inside the polygon.
+  // Computed from the polygon's data in a canonical order, so both cells on a face get the
+  // same point, and kept only when a sign change within the tolerance certifies it.
+  struct Candidate {
+    std::size_t polygon;
+    Vec3 q, plus, minus;
+    double r_plus, r_minus;
+  };
+  std::vector<Candidate> candidates;
+  std::vector<Point2> corners;
+  for (std::size_t pi = 0; pi < polygons.size() && ctx_.sharp_features; ++pi) {
+    const Polygon& poly = polygons[pi];
+    if (crossing[pi][0] == kNone || !poly.outer) continue;
+    const int axis = poly.axis, u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const std::uint32_t r1 = std::min(crossing[pi][0], crossing[pi][1]), r2 = std::max(crossing[pi][0], crossing[pi][1]);
+    const Vec3& e1 = points[r1];
+    const Vec3& e2 = points[r2];
+    // Where the symbolic gradient fails, differences within the face piece (not the cell),
+    // so that both cells on the face get the same normal.
+    Vec3 n1 = normal3[r1], n2 = normal3[r2];
+    if (!symbolic[r1] || !symbolic[r2]) {
+      const Vec3 ends[2] = {e1, e2};
+      const double fe[2] = {f[r1], f[r2]};
+      std::vector<Vec3> in_plane;
+      normals(ends, fe, std::span(&poly.region, 1), in_plane);
+      if (!symbolic[r1]) n1 = in_plane[0];
+      if (!symbolic[r2]) n2 = in_plane[1];
+    }
+    const Point2 m1{n1[u], n1[v]}, m2{n2[u], n2[v]};
+    const double l1 = std::hypot(m1[0], m1[1]), l2 = std::hypot(m2[0], m2[1]);
+    if (!(l1 > 1e-3) || !(l2 > 1e-3)) continue;
+    if ((m1[0] * m2[0] + m1[1] * m2[1]) / (l1 * l2) > ctx_.feature_cos) continue;  // smooth
+    const double det = m1[0] * m2[1] - m1[1] * m2[0];
+    if (det == 0.0) continue;
+    const double c1 = m1[0] * e1[u] + m1[1] * e1[v], c2 = m2[0] * e2[u] + m2[1] * e2[v];
+    const Point2 q2{(c1 * m2[1] - c2 * m1[1]) / det, (m1[0] * c2 - m2[0] * c1) / det};
+    corners.clear();
+    for (std::uint32_t i = 0; i < poly.count; ++i) {
+      const Vec3 pc = frame.point(key_at(poly, i));
+      corners.push_back({pc[u], pc[v]});
+    }
+    const double size = std::max(poly.region.hi[u] - poly.region.lo[u], poly.region.hi[v] - poly.region.lo[v]);
+    if (!inside_convex(q2, corners, 1e-6 * size)) continue;
+    // Certification probes along the bisector of the two in-plane normals.
+    Point2 d{m1[0] / l1 + m2[0] / l2, m1[1] / l1 + m2[1] / l2};
+    const double dl = std::hypot(d[0], d[1]);
+    if (!(dl > 1e-6)) continue;
+    d = {d[0] / dl, d[1] / dl};
+    const double rp = std::min(ctx_.tolerance, 0.999 * exit_parameter(q2, d, corners));
+    const double rm = std::min(ctx_.tolerance, 0.999 * exit_parameter(q2, {-d[0], -d[1]}, corners));
+    Vec3 q3 = e1;  // e1 lies on the face plane exactly: keep its axis coordinate
+    q3[u] = q2[0];
+    q3[v] = q2[1];
+    Vec3 plus = q3, minus = q3;
+    plus[u] += rp * d[0];
+    plus[v] += rp * d[1];
+    minus[u] -= rm * d[0];
+    minus[v] -= rm * d[1];
+    candidates.push_back({pi, q3, plus, minus, rp, rm});
+  }
+  std::vector<std::uint32_t> feature(polygons.size(), kNone);
+  if (!candidates.empty()) {
+    std::vector<Vec3> probe;
+    for (const Candidate& c : candidates) probe.insert(probe.end(), {c.q, c.plus, c.minus});
+    std::vector<double> pg;
+    evaluate(probe, pg);
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const double g0 = pg[3 * k], gp = pg[3 * k + 1], gm = pg[3 * k + 2];
+      if (std::isnan(g0)) continue;
+      double bound = -1.0;
+      if (g0 == 0.0) bound = 0.0;
+      else if (is_inside(g0) != is_inside(gp)) bound = candidates[k].r_plus;
+      else if (is_inside(g0) != is_inside(gm)) bound = candidates[k].r_minus;
+      if (bound < 0.0) continue;
+      feature[candidates[k].polygon] = vertex(out, polygons[candidates[k].polygon].feature_key, candidates[k].q, bound);
+    }
+  }
+  normal_.resize(out.vertices.size(), Vec3{0, 0, 0});
+
+  segments.clear();
+  for (std::size_t pi = 0; pi < polygons.size(); ++pi) {
+    if (crossing[pi][0] == kNone) continue;
+    const std::uint32_t from = root_vertex[crossing[pi][0]], to = root_vertex[crossing[pi][1]];
+    const auto index = static_cast<std::uint32_t>(pi);
+    if (feature[pi] != kNone) {
+      segments.push_back({from, feature[pi], index});
+      segments.push_back({feature[pi], to, index});
+    } else {
+      segments.push_back({from, to, index});
+    }
+  }
+}
+
+bool CellMesher::snap(const Vec3& start, Vec3& apex, double& error) {
+  // From `start` (inside the shrunk cell) along the gradient toward the other sign, at most
+  // the tolerance, staying inside the shrunk cell; then the root between.
+  const double margin = 1e-4 * cell_size_;
+  double lo[3], hi[3];
+  Vec3 x = start;
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = cell_lo_[k] + margin;
+    hi[k] = cell_hi_[k] - margin;
+    x[k] = std::clamp(x[k], lo[k], hi[k]);
+  }
+  apex = x;
+  std::vector<double> g, f;
+  std::vector<Vec3> n;
+  const Region whole = cell_region();
+  evaluate(std::span(&x, 1), g, &f);
+  if (g[0] == 0.0) {
+    error = 0.0;
+    return true;
+  }
+  normals(std::span(&x, 1), f, std::span(&whole, 1), n);
+  if (!(dot(n[0], n[0]) > 0) || std::isnan(g[0])) return false;
+  const double s = is_inside(g[0]) ? 1.0 : -1.0;  // toward the other sign
+  const Vec3 dir{s * n[0][0], s * n[0][1], s * n[0][2]};
+  double reach = ctx_.tolerance;
+  for (int k = 0; k < 3; ++k) {
+    if (dir[k] > 0) reach = std::min(reach, (hi[k] - x[k]) / dir[k]);
+    if (dir[k] < 0) reach = std::min(reach, (lo[k] - x[k]) / dir[k]);
+  }
+  Vec3 y{x[0] + reach * dir[0], x[1] + reach * dir[1], x[2] + reach * dir[2]};
+  for (int k = 0; k < 3; ++k) y[k] = std::clamp(y[k], lo[k], hi[k]);
+  std::vector<double> gy;
+  evaluate(std::span(&y, 1), gy);
+  if (is_inside(gy[0]) == is_inside(g[0])) return false;
+  const bool x_in = is_inside(g[0]);
+  const Vec3& a = x_in ? x : y;
+  const Vec3& b = x_in ? y : x;
+  const double ga = x_in ? g[0] : gy[0], gb = x_in ? gy[0] : g[0];
+  std::vector<double> t, err;
+  find_roots(std::span(&a, 1), std::span(&b, 1), std::span(&ga, 1), std::span(&gb, 1), t, err);
+  apex = lerp(a, b, t[0]);
+  error = err[0];
+  return true;
+}
+
+void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, CellOutput& out) {
+  // The apex: the quadric point of the loop's points with normals, or else the loop's
+  // centroid, moved onto the surface along the gradient; the first candidate that lands on
+  // the surface without folding a triangle against the loop's normals wins.
+  std::vector<Vec3> pts, nrm;
+  Vec3 centroid{0, 0, 0};
+  for (std::uint32_t i : loop) {
+    const Vec3& p = out.vertices[i].position;
+    for (int k = 0; k < 3; ++k) centroid[k] += p[k] / static_cast<double>(loop.size());
+    if (dot(normal_[i], normal_[i]) > 0) {
+      pts.push_back(p);
+      nrm.push_back(normal_[i]);
+    }
+  }
+  std::vector<Vec3> starts;
+  if (ctx_.sharp_features && !pts.empty()) starts.push_back(solve_qef(pts, nrm));
+  starts.push_back(centroid);
+  auto folds = [&](const Vec3& apex) {
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const std::uint32_t a = loop[k], b = loop[(k + 1) % loop.size()];
+      const Vec3 normal = cross(sub(out.vertices[a].position, apex), sub(out.vertices[b].position, apex));
+      const Vec3 m{normal_[a][0] + normal_[b][0], normal_[a][1] + normal_[b][1], normal_[a][2] + normal_[b][2]};
+      if (dot(normal, m) < 0) return true;
+    }
+    return false;
+  };
+  Vec3 apex{};
+  double apex_error = -1.0;
+  bool chosen = false;
+  for (int pass = 0; pass < 2 && !chosen; ++pass)
+    for (const Vec3& start : starts) {
+      Vec3 candidate;
+      double error = -1.0;
+      const bool on_surface = snap(start, candidate, error);
+      if (!on_surface && pass == 0) continue;
+      if (pass == 0 && folds(candidate)) continue;
+      apex = candidate;
+      apex_error = on_surface ? error : -1.0;
+      chosen = true;
+      break;
+    }
+  if (apex_error < 0) out.inaccurate = out.wants_split = true;
+  const std::uint32_t apex_index = vertex(out, {VertexKind::Apex, pack(cell.corner), 0, 0}, apex, apex_error);
+  for (std::size_t k = 0; k < loop.size(); ++k)
+    out.triangles.push_back({apex_index, loop[k], loop[(k + 1) % loop.size()]});
+  const Region whole = cell_region();
+
+  // Accuracy estimate |g| / |grad g| at the triangles' centroids and at the midpoints of the
+  // trace segments, and triangles folded against the surface's normal.
+  std::vector<Vec3> probes;
+  for (const auto& tri : out.triangles) {
+    Vec3 c{0, 0, 0}, m{0, 0, 0};
+    for (std::uint32_t i : tri)
+      for (int k = 0; k < 3; ++k) c[k] += out.vertices[i].position[k] / 3.0;
+    for (int k = 0; k < 3; ++k) m[k] = 0.5 * (out.vertices[tri[1]].position[k] + out.vertices[tri[2]].position[k]);
+    probes.push_back(c);
+    probes.push_back(m);
+  }
+  std::vector<double> gp, fp, grad;
+  std::vector<Vec3> np;
+  evaluate(probes, gp, &fp);
+  normals(probes, fp, std::span(&whole, 1), np, &grad);
+  for (std::size_t i = 0; i < probes.size(); ++i) {
+    if (!(std::fabs(gp[i]) <= ctx_.tolerance * grad[i])) out.inaccurate = out.wants_split = true;
+    if (i % 2 == 0) {
+      const auto& tri = out.triangles[i / 2];
+      const Vec3 normal = cross(sub(out.vertices[tri[1]].position, out.vertices[tri[0]].position),
+                                sub(out.vertices[tri[2]].position, out.vertices[tri[0]].position));
+      if (dot(normal, np[i]) < 0) out.folded = out.wants_split = true;
+    }
+  }
+}
+
+void CellMesher::tetrahedra(const Cell& cell, CellOutput& out) {
+  // Every fan triangle (fc, b_i, b_j) of the cell's pieces with the cell center cc is a
+  // tetrahedron; its faces, counter-clockwise seen from outside it: (fc, b_i, b_j),
+  // (fc, b_j, cc), (fc, cc, b_i), (b_j, b_i, cc).
+  const std::uint32_t h = cell.size() / 2;
+  const Key cc = pack(cell.corner[0] + h, cell.corner[1] + h, cell.corner[2] + h);
+  std::vector<Polygon> outer, faces;
+  std::vector<Key> keys;
+  for (const Piece& p : pieces_) add_fan_triangles(p, outer, keys);
+  for (const Polygon& t : outer) {
+    faces.push_back(t);
+    const Key fc = keys[t.first], b0 = keys[t.first + 1], b1 = keys[t.first + 2];
+    for (const std::array<Key, 3>& inner : {std::array<Key, 3>{fc, b1, cc}, std::array<Key, 3>{fc, cc, b0},
+                                            std::array<Key, 3>{b1, b0, cc}}) {
+      Polygon q = t;
+      q.first = static_cast<std::uint32_t>(keys.size());
+      q.outer = false;
+      keys.insert(keys.end(), inner.begin(), inner.end());
+      faces.push_back(q);
+    }
+  }
+  std::vector<Segment> segments;
+  trace(faces, keys, out, segments);
+  // Segments come in polygon order, so each tetrahedron's are consecutive.
+  std::vector<std::uint32_t> polygon;
+  for (std::size_t s = 0; s < segments.size();) {
+    const std::uint32_t tet = segments[s].polygon / 4;
+    std::size_t e = s;
+    while (e < segments.size() && segments[e].polygon / 4 == tet) ++e;
+    polygon.assign(1, segments[s].from);
+    while (true) {
+      std::size_t k = s;
+      while (k < e && segments[k].from != polygon.back()) ++k;
+      if (k == e) throw std::logic_error("genmod: mesh_implicit: a tetrahedron's trace is not closed");
+      if (segments[k].to == polygon.front()) break;
+      polygon.push_back(segments[k].to);
+      if (polygon.size() > e - s) throw std::logic_error("genmod: mesh_implicit: a tetrahedron's trace is not one loop");
+    }
+    bool plain = true;  // only roots on edges: marching tetrahedra's triangle or quad
+    for (std::uint32_t i : polygon) plain = plain && out.vertices[i].key.kind == VertexKind::EdgePoint;
+    if (polygon.size() == 3) {
+      out.triangles.push_back({polygon[0], polygon[1], polygon[2]});
+    } else if (polygon.size() == 4 && plain) {
+      // Split along the shorter diagonal.
+      const auto& v = out.vertices;
+      const bool first = distance(v[polygon[0]].position, v[polygon[2]].position) <=
+                         distance(v[polygon[1]].position, v[polygon[3]].position);
+      const std::uint32_t a = polygon[first ? 0 : 1], b = polygon[first ? 1 : 2], c = polygon[first ? 2 : 3],
+                          d = polygon[first ? 3 : 0];
+      out.triangles.push_back({a, b, c});
+      out.triangles.push_back({a, c, d});
+    } else {
+      // The cone from the centroid of the polygon, strictly inside the tetrahedron because
+      // the polygon does not lie in one of its faces.
+      Vec3 c{0, 0, 0};
+      for (std::uint32_t i : polygon)
+        for (int k = 0; k < 3; ++k) c[k] += out.vertices[i].position[k] / static_cast<double>(polygon.size());
+      const Key* t = &keys[outer[tet].first];
+      const std::uint32_t apex = vertex(out, {VertexKind::TetApex, t[0], t[1], t[2]}, c, -1.0);
+      for (std::size_t k = 0; k < polygon.size(); ++k)
+        out.triangles.push_back({apex, polygon[k], polygon[(k + 1) % polygon.size()]});
+    }
+    s = e;
+  }
+}
+
+}  // namespace genmod::implicit

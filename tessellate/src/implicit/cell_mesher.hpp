@@ -1,0 +1,165 @@
+// Meshing one surface cell of the octree (the algorithm is described in tessellate/README.md).
+//
+// Each face of the cell is cut into the pieces of its smaller neighbours. A piece's boundary
+// points are its corners and the corners of smaller cells on its sides. The surface's trace
+// on a piece:
+//  * "direct" when the boundary has exactly two sign changes: one segment between the two
+//    roots, bent at a feature point where the tangent lines there meet inside the piece;
+//  * "fan" otherwise (four or more sign changes, or an island only the piece's center sees,
+//    or forced, see below): the piece is triangulated from its center and marching triangles
+//    gives one segment per triangle with a sign change (bent at a feature point inside it).
+// The trace of a piece depends only on the piece, so the two cells on it agree bit for bit.
+// The traces on the cell's faces form closed loops.
+//
+// A cell with one loop gets the cone from one interior vertex (the quadric point, moved onto
+// the surface): any point strictly inside a convex cell sees a loop on the cell's boundary
+// without overlap, so the cone is an embedded disk, and cones of different cells meet only in
+// the traces they share. A cell with several loops asks to be split; where it cannot be, it is
+// cut into tetrahedra (cell center x the fan triangles of its pieces) and meshed by marching
+// tetrahedra, whose pieces also meet the cell's boundary exactly in the trace. That needs every
+// piece of the cell in fan mode: the cell reports its direct pieces, the mesher forces them to
+// fan mode and meshes the cell and its neighbours again.
+#pragma once
+
+#include "genmod/kernel/batch_evaluator.hpp"
+#include "implicit/octree.hpp"
+
+#include <compare>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace genmod::implicit {
+
+enum class VertexKind : std::uint8_t { EdgePoint, FacePoint, Apex, TetApex };
+
+// Identifies an output vertex across cells: equal keys are the same vertex.
+//   EdgePoint: root on the segment from lattice point a (inside) to b (outside).
+//   FacePoint: feature point of the fan triangle (a = piece center, b < c its other corners),
+//              or of the direct piece with center a (b = kNoKey, c = its axis).
+//   Apex: vertex of the cell with low corner a.
+//   TetApex: interior vertex of the tetrahedron on fan triangle (a, b, c) of its cell.
+struct VertexKey {
+  VertexKind kind;
+  Key a, b, c;
+  auto operator<=>(const VertexKey&) const = default;
+};
+inline constexpr Key kNoKey = ~Key{0};
+
+// A face piece, by its center and the axis its plane is perpendicular to.
+struct PieceId {
+  Key center;
+  std::uint8_t axis;
+  auto operator<=>(const PieceId&) const = default;
+};
+
+struct OutVertex {
+  VertexKey key;
+  Vec3 position;
+  double error;  // certified distance bound to the surface, or < 0 when not certified
+};
+
+struct CellOutput {
+  std::vector<OutVertex> vertices;
+  std::vector<std::array<std::uint32_t, 3>> triangles;  // local vertex indices, outward
+  bool wants_split = false;  // several loops, or faces / vertex beyond the tolerance
+  bool multi_loop = false;   // several loops (meshed by the tetrahedral fallback when all fan)
+  bool inaccurate = false;   // face estimate or vertex beyond the tolerance
+  bool folded = false;       // a triangle faces against the surface's normal
+  std::vector<PieceId> direct_pieces;  // multi_loop: pieces to force to fan mode
+};
+
+struct MeshContext {
+  const Octree* octree;
+  const Frame* frame;
+  double tolerance;       // vertex and face distance target
+  double root_tolerance;  // bracket width of roots on edges
+  bool sharp_features;
+  double feature_cos;     // cos(feature_angle)
+  const std::vector<PieceId>* fan_pieces;  // sorted: pieces forced to fan mode
+};
+
+// One per thread: scratch memory and evaluators.
+class CellMesher {
+ public:
+  explicit CellMesher(const MeshContext& context) : ctx_(context) {}
+  void mesh(const Cell& cell, CellOutput& out);
+
+ private:
+  // A box in space for finite differences and feature points (flat along the plane axis).
+  struct Region {
+    Vec3 lo, hi;
+  };
+  struct Piece {
+    int axis;
+    Key center;
+    Region region;
+    std::uint32_t first, count;  // boundary points in boundary_, counter-clockwise from outside
+    bool fan;
+  };
+  // A convex polygon on which the trace is one segment (or none): a fan triangle, a direct
+  // piece, or an inner face of a fallback tetrahedron.
+  struct Polygon {
+    std::uint32_t first, count;  // vertex keys in polygon_keys_, counter-clockwise from outside
+    int axis;                    // plane axis (outer polygons)
+    bool outer;                  // on the cell boundary: may get a feature point
+    VertexKey feature_key;       // the key of its feature point
+    Region region;               // where finite differences and feature probes may go
+  };
+  struct Segment {
+    std::uint32_t from, to;  // local vertex indices
+    std::uint32_t polygon;
+  };
+  struct Root {
+    Key in, out;
+    auto operator<=>(const Root&) const = default;
+  };
+
+  void gather_pieces(const Cell& cell);
+  void choose_modes(CellOutput& out);
+  void add_fan_triangles(const Piece& p, std::vector<Polygon>& polygons, std::vector<Key>& keys) const;
+  bool inside(Key k) const;
+  double sample(Key k) const;
+  // g = max(f, clip) and f at points, with the cell's tape.
+  void evaluate(std::span<const Vec3> points, std::vector<double>& g, std::vector<double>* f = nullptr);
+  // Unit normals of g at points (whose f values are given) and |grad g|: the symbolic
+  // gradient where it is finite and nonzero, else central differences of g with the steps
+  // kept inside regions[i] (or regions[0] for all). `symbolic` tells which were symbolic.
+  void normals(std::span<const Vec3> points, std::span<const double> f, std::span<const Region> regions,
+               std::vector<Vec3>& normals, std::vector<double>* lengths = nullptr,
+               std::vector<char>* symbolic = nullptr);
+  // Roots on segments a (g < 0) -> b (g >= 0 or error): parameters in (0, 1) and bracket
+  // half-widths in space.
+  void find_roots(std::span<const Vec3> a, std::span<const Vec3> b, std::span<const double> ga,
+                  std::span<const double> gb, std::vector<double>& t, std::vector<double>& error);
+  // Marching polygons: roots, feature points and segments of `polygons` (keys in `keys`).
+  void trace(const std::vector<Polygon>& polygons, const std::vector<Key>& keys, CellOutput& out,
+             std::vector<Segment>& segments);
+  std::uint32_t vertex(CellOutput& out, const VertexKey& key, const Vec3& p, double error);
+  // Moves `start` onto the surface along the gradient; false when no root is within reach.
+  bool snap(const Vec3& start, Vec3& apex, double& error);
+  void cone(const Cell& cell, const std::vector<std::uint32_t>& loop, CellOutput& out);
+  void tetrahedra(const Cell& cell, CellOutput& out);
+  Region cell_region() const;
+
+  const MeshContext& ctx_;
+  BatchEvaluator batch_;
+  const CellTapes* tapes_ = nullptr;
+  double cell_lo_[3] = {0, 0, 0}, cell_hi_[3] = {0, 0, 0}, cell_size_ = 0;
+
+  std::vector<std::array<std::uint32_t, 4>> rects_;
+  std::vector<std::uint32_t> line_points_;
+  std::vector<Piece> pieces_;
+  std::vector<Key> boundary_;
+  std::vector<Polygon> polygons_;
+  std::vector<Key> polygon_keys_;
+  std::vector<Key> sample_keys_;
+  std::vector<double> sample_g_;
+  std::vector<Vec3> normal_;  // unit normal at each output vertex of the cell (0 if none)
+  // Evaluation scratch.
+  std::vector<double> xs_, ys_, zs_, fs_, gx_, gy_, gz_;
+  std::vector<Vec3> fd_points_;
+  std::vector<double> fd_g_;
+};
+
+}  // namespace genmod::implicit

@@ -1,0 +1,269 @@
+// Octree construction (level by level, each level classified in parallel) and queries.
+#include "implicit/octree.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <optional>
+
+namespace genmod::implicit {
+namespace {
+
+struct Decision {
+  CellKind kind = CellKind::Outside;
+  bool certified = false;
+  bool bounded_gradient = true;
+  bool split = false;  // wants to be split (kind is then Surface, used if the split is refused)
+  std::optional<CellTapes> tapes;  // Surface: the pruned tapes
+};
+
+std::array<Interval, 3> cell_box(const Frame& frame, const Cell& c) {
+  const std::uint32_t s = c.size();
+  const Vec3 lo = frame.point(c.corner);
+  const Vec3 hi = frame.point({c.corner[0] + s, c.corner[1] + s, c.corner[2] + s});
+  return {Interval(lo[0], hi[0]), Interval(lo[1], hi[1]), Interval(lo[2], hi[2])};
+}
+
+// Plantinga and Vegter's test: any two gradients in G have a positive dot product.
+bool normals_in_a_cone(const std::array<Interval, 3>& g) {
+  Interval dot = g[0] * g[0];
+  dot += g[1] * g[1];
+  dot += g[2] * g[2];
+  return dot.lo() > 0.0;
+}
+
+Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext& ctx, ClassifyWorker& w) {
+  Decision d;
+  const std::array<Interval, 3> box = cell_box(*ctx.frame, c);
+  std::array<int, 3> active{};
+  const Interval s = ctx.frame->clip(box, &active);
+  if (s.lo() > 0.0) return d;  // outside the box
+  Interval f = w.intervals.eval(parent.value, box)[0];
+  const std::uint8_t err = w.intervals.errors()[0];
+  ++w.evaluations;
+  // Points where f is an error count as outside, as in render_sign.
+  if (err == kCertainError) return d;
+  if (err == kNoError && f.lo() >= 0.0) return d;
+  if (err == kNoError && std::max(f.hi(), s.hi()) < 0.0) {
+    d.kind = CellKind::Inside;
+    return d;
+  }
+  CellTapes tapes{parent.value.simplify(w.intervals.choices()), parent.gradient};
+
+  // g = max(f, clip): f is the maximum somewhere iff f.hi >= clip.lo.
+  const bool f_active = f.hi() >= s.lo();
+  std::array<Interval, 3> g = {Interval::empty(), Interval::empty(), Interval::empty()};
+  if (f_active) {
+    const auto gf = w.intervals.eval(parent.gradient, box);
+    bool gerr = false;
+    for (std::uint8_t e : w.intervals.errors()) gerr = gerr || e != kNoError;
+    tapes.gradient = parent.gradient.simplify(w.intervals.choices());
+    for (int k = 0; k < 3; ++k) g[k] = gerr ? Interval::entire() : gf[static_cast<std::size_t>(k)];
+    d.bounded_gradient = !gerr;
+    if (!gerr && err == kNoError) {
+      // The mean value form f(m) + grad f(X) (X - m) is second order in the cell's size: it
+      // removes most cells the natural extension only guesses may hold surface.
+      std::array<Interval, 3> center;
+      for (int k = 0; k < 3; ++k) center[k] = Interval(box[k].mid());
+      const Interval fm = w.intervals.eval(tapes.value, center)[0];
+      if (w.intervals.errors()[0] == kNoError) {
+        Interval mv = fm;
+        for (int k = 0; k < 3; ++k) mv += g[k] * (box[k] - center[k]);
+        f = intersect(f, mv);
+        if (f.lo() >= 0.0) return d;
+        if (std::max(f.hi(), s.hi()) < 0.0) {
+          d.kind = CellKind::Inside;
+          return d;
+        }
+      }
+    }
+  }
+  d.kind = CellKind::Surface;
+  d.tapes = std::move(tapes);
+  const bool clip_active = s.hi() >= f.lo();
+  if (clip_active)
+    for (int a = 0; a < 3; ++a) {
+      if (active[a] == 0) continue;
+      for (int k = 0; k < 3; ++k) {
+        const Interval part = k != a ? Interval(0.0) : active[a] == 1 ? Interval(1.0)
+                                                     : active[a] == -1 ? Interval(-1.0) : Interval(-1.0, 1.0);
+        g[k] = g[k].is_empty() ? part : hull(g[k], part);
+      }
+    }
+  d.certified = d.bounded_gradient && normals_in_a_cone(g);
+  // A wide normal cone means detail (curvature, a crease, a small part): split down to
+  // min_feature. Without gradient bounds (a formula whose derivative fails, like the 0/0 of
+  // |max(q, 0)| in an exact box distance) the meshing checks decide instead.
+  d.split = c.level < ctx.max_cell_level || (!d.certified && d.bounded_gradient && c.level < ctx.min_level);
+  return d;
+}
+
+}  // namespace
+
+Octree::Octree(const ImplicitSurface& surface, const ClassifyContext& context,
+               std::chrono::steady_clock::time_point deadline, ImplicitMeshStats& stats)
+    : context_(context) {
+  cells_.push_back(Cell{});
+  std::vector<Pending> pending{{0, {surface.value(), surface.gradient()}}};
+  bool timed_out = false;
+  while (!pending.empty()) {
+    if (!timed_out && std::chrono::steady_clock::now() > deadline) {
+      timed_out = true;
+      stats.limits_hit.emplace_back("seconds");
+    }
+    pending = classify_all(pending, !timed_out, stats);
+  }
+}
+
+std::vector<Octree::Pending> Octree::classify_all(std::vector<Pending>& pending, bool allow_split,
+                                                  ImplicitMeshStats& stats) {
+  std::vector<Decision> decisions(pending.size());
+  tbb::enumerable_thread_specific<ClassifyWorker> workers;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, pending.size(), 16), [&](const auto& r) {
+    ClassifyWorker& w = workers.local();
+    for (std::size_t i = r.begin(); i != r.end(); ++i)
+      decisions[i] = classify(cells_[pending[i].cell], pending[i].tapes, context_, w);
+  });
+  for (const ClassifyWorker& w : workers) stats.interval_evaluations += w.evaluations;
+
+  // Applied in order, so the cell numbering does not depend on the threads.
+  std::vector<Pending> next;
+  for (std::size_t i = 0; i < pending.size(); ++i) {
+    Decision& d = decisions[i];
+    const std::uint32_t index = pending[i].cell;
+    bool split = d.kind == CellKind::Surface && d.split && allow_split;
+    if (split && cells_.size() + 8 > context_.settings->max_cells) {
+      split = false;
+      if (std::find(stats.limits_hit.begin(), stats.limits_hit.end(), "cells") == stats.limits_hit.end())
+        stats.limits_hit.emplace_back("cells");
+    }
+    if (split) {
+      const Cell parent = cells_[index];
+      const std::uint32_t half = parent.size() / 2;
+      cells_[index].kind = CellKind::Internal;
+      cells_[index].children = static_cast<std::uint32_t>(cells_.size());
+      for (std::uint32_t b = 0; b < 8; ++b) {
+        Cell child;
+        child.corner = {parent.corner[0] + (b & 1 ? half : 0), parent.corner[1] + (b & 2 ? half : 0),
+                        parent.corner[2] + (b & 4 ? half : 0)};
+        child.level = static_cast<std::uint8_t>(parent.level + 1);
+        next.push_back({static_cast<std::uint32_t>(cells_.size()), *d.tapes});
+        cells_.push_back(child);
+      }
+      continue;
+    }
+    Cell& c = cells_[index];
+    c.kind = d.kind;
+    c.certified = d.certified;
+    c.bounded_gradient = d.bounded_gradient;
+    if (d.kind == CellKind::Surface) {
+      c.tapes = static_cast<std::uint32_t>(tapes_.size());
+      tapes_.push_back(std::move(*d.tapes));
+    }
+  }
+  return next;
+}
+
+void Octree::split(const std::vector<std::uint32_t>& surface_cells, ImplicitMeshStats& stats) {
+  std::vector<Pending> children;
+  for (std::uint32_t index : surface_cells) {
+    if (cells_.size() + 8 > context_.settings->max_cells) {
+      if (std::find(stats.limits_hit.begin(), stats.limits_hit.end(), "cells") == stats.limits_hit.end())
+        stats.limits_hit.emplace_back("cells");
+      break;
+    }
+    const Cell parent = cells_[index];
+    const CellTapes tapes = tapes_[parent.tapes];
+    const std::uint32_t half = parent.size() / 2;
+    cells_[index].kind = CellKind::Internal;
+    cells_[index].children = static_cast<std::uint32_t>(cells_.size());
+    cells_[index].tapes = kNone;
+    for (std::uint32_t b = 0; b < 8; ++b) {
+      Cell child;
+      child.corner = {parent.corner[0] + (b & 1 ? half : 0), parent.corner[1] + (b & 2 ? half : 0),
+                      parent.corner[2] + (b & 4 ? half : 0)};
+      child.level = static_cast<std::uint8_t>(parent.level + 1);
+      children.push_back({static_cast<std::uint32_t>(cells_.size()), tapes});
+      cells_.push_back(child);
+    }
+  }
+  classify_all(children, /*allow_split=*/false, stats);
+}
+
+void Octree::face_pieces(const Cell& c, int axis, int side, std::vector<std::array<std::uint32_t, 4>>& out) const {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const std::uint32_t size = c.size();
+  out.clear();
+  const std::array<std::uint32_t, 4> own{c.corner[u], c.corner[v], c.corner[u] + size, c.corner[v] + size};
+  std::array<std::uint32_t, 3> nb = c.corner;
+  if (side > 0) {
+    nb[axis] += size;
+    if (nb[axis] >= kRootSize) {
+      out.push_back(own);
+      return;
+    }
+  } else {
+    if (nb[axis] == 0) {
+      out.push_back(own);
+      return;
+    }
+    nb[axis] -= size;
+  }
+  std::uint32_t idx = 0;
+  while (cells_[idx].kind == CellKind::Internal && cells_[idx].level < c.level) {
+    const int shift = kLatticeBits - cells_[idx].level - 1;
+    const std::uint32_t b = ((nb[0] >> shift) & 1u) | (((nb[1] >> shift) & 1u) << 1) | (((nb[2] >> shift) & 1u) << 2);
+    idx = cells_[idx].children + b;
+  }
+  if (cells_[idx].kind != CellKind::Internal) {
+    out.push_back(own);
+    return;
+  }
+  // The neighbour is split: its leaves on the side facing c.
+  const std::uint32_t facing_bit = side > 0 ? 0u : 1u;
+  std::vector<std::uint32_t> stack{idx};
+  while (!stack.empty()) {
+    const Cell& n = cells_[stack.back()];
+    stack.pop_back();
+    if (n.kind != CellKind::Internal) {
+      out.push_back({n.corner[u], n.corner[v], n.corner[u] + n.size(), n.corner[v] + n.size()});
+      continue;
+    }
+    for (std::uint32_t b = 0; b < 8; ++b)
+      if (((b >> axis) & 1u) == facing_bit) stack.push_back(n.children + b);
+  }
+}
+
+void Octree::points_on_segment(int axis, const std::array<std::uint32_t, 3>& on, std::uint32_t t0, std::uint32_t t1,
+                               std::vector<std::uint32_t>& out) const {
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  out.clear();
+  auto touches = [&](const Cell& n) {
+    const std::uint32_t s = n.size();
+    return n.corner[u] <= on[u] && on[u] <= n.corner[u] + s && n.corner[v] <= on[v] && on[v] <= n.corner[v] + s &&
+           n.corner[axis] < t1 && n.corner[axis] + s > t0;
+  };
+  std::uint32_t stack[8 * 32];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Cell& n = cells_[stack[--top]];
+    const std::uint32_t s = n.size();
+    if (n.kind == CellKind::Internal) {
+      for (std::uint32_t b = 0; b < 8; ++b)
+        if (touches(cells_[n.children + b])) stack[top++] = n.children + b;
+      continue;
+    }
+    const bool on_u = on[u] == n.corner[u] || on[u] == n.corner[u] + s;
+    const bool on_v = on[v] == n.corner[v] || on[v] == n.corner[v] + s;
+    if (!on_u || !on_v) continue;
+    for (std::uint32_t t : {n.corner[axis], n.corner[axis] + s})
+      if (t0 < t && t < t1) out.push_back(t);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+}  // namespace genmod::implicit
