@@ -35,6 +35,8 @@ std::pair<std::string, double> parse_param(const std::string& text) {
 }
 
 int run_mesh(std::span<const std::string> args) {
+  for (const std::string& arg : args)
+    if (arg.size() > 3 && arg.compare(arg.size() - 3, 3, ".vm") == 0) return run_mesh_implicit(args);
   // --param may repeat: take every occurrence out before the generic scanner sees the rest.
   models::ParameterValues overrides;
   std::vector<std::string> rest;
@@ -79,11 +81,20 @@ int run_mesh(std::span<const std::string> args) {
 }  // namespace
 
 const Command kMeshCommand{
-    "mesh", "NAME [--param NAME=VALUE ...] [--res N] -o FILE",
-    "mesh a gallery model (see `genmod list`) to an OBJ/PLY/STL/OFF file",
+    "mesh", "NAME [--param NAME=VALUE ...] [--res N] -o FILE | MODEL.vm --min-feature H [options] -o FILE",
+    "mesh a gallery model (see `genmod list`) or an implicit .vm model to an OBJ/PLY/STL/OFF file",
     "  -p, --param K=V  set a model parameter (repeatable; defaults from `genmod list`)\n"
     "  --res N          lattice samples per direction, 3..4096 (default 64)\n"
-    "  -o, --output     mesh file to write; the format follows the extension (.obj .ply .stl .off)\n",
+    "  -o, --output     mesh file to write; the format follows the extension (.obj .ply .stl .off)\n"
+    "implicit models (MODEL.vm, solid where f < 0; the mesh bounds the solid within the box):\n"
+    "  --box x0,y0,z0,x1,y1,z1  region to mesh (default -1,-1,-1,1,1,1)\n"
+    "  --min-feature H  smallest cell edge (required)\n"
+    "  --tolerance E    largest vertex distance from the surface (default H)\n"
+    "  --max-cell C     largest cell holding surface (default box / 8)\n"
+    "  --max-cells N, --max-seconds S  limits (reported when reached)\n"
+    "  --threads N      worker threads (default: all cores)\n"
+    "  --no-sharp       no feature points (smooth placement only)\n"
+    "  --no-check       skip the validity report (exit status 1 when the mesh is not valid)\n",
     run_mesh};
 
 }  // namespace genmod::app

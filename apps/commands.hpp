@@ -28,4 +28,7 @@ extern const Command kInfoCommand;
 extern const Command kListCommand;
 extern const Command kMeshCommand;
 
+// genmod mesh MODEL.vm ...: the implicit path of the mesh command.
+int run_mesh_implicit(std::span<const std::string> args);
+
 }  // namespace genmod::app

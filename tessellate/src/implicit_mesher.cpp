@@ -12,7 +12,6 @@
 #include <tbb/parallel_sort.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -112,13 +111,8 @@ Mesh assemble(const std::vector<CellOutput>& outputs, ImplicitMeshStats& stats, 
       else stats.max_vertex_error = std::max(stats.max_vertex_error, v.error);
       if (v.key.kind == implicit::VertexKind::FacePoint) ++stats.feature_points;
     } else if (mesh.vertices.back() != v.position) {
-      {
-        const auto& w = mesh.vertices.back();
-        char buf[400];
-        std::snprintf(buf, sizeof buf, " (kind %d key %llx %llx %llx: %.17g %.17g %.17g vs %.17g %.17g %.17g, cells %u %u)", static_cast<int>(v.key.kind),
-                      (unsigned long long)v.key.a, (unsigned long long)v.key.b, (unsigned long long)v.key.c, w[0], w[1], w[2], v.position[0], v.position[1], v.position[2], all[i-1].cell, all[i].cell);
-        throw std::logic_error(std::string("genmod: mesh_implicit: two cells computed different positions for one vertex") + buf);
-      }
+      throw std::logic_error("genmod: mesh_implicit: two cells computed different positions for one vertex (kind " +
+                             std::to_string(static_cast<int>(v.key.kind)) + ")");
     }
     global[first[all[i].cell] + all[i].local] = static_cast<std::uint32_t>(mesh.vertices.size() - 1);
   }
@@ -177,25 +171,35 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
                                         &fan_pieces};
     tbb::enumerable_thread_specific<CellMesher> meshers([&] { return CellMesher(context); });
     std::vector<std::uint32_t> surface_cells;
-    std::vector<CellOutput> outputs;
+    std::vector<CellOutput> outputs;      // per surface cell, in surface_cells order
+    std::vector<CellOutput> kept;         // per octree cell: the last output of a clean cell
+    std::vector<char> dirty(tree.cells().size(), 1);
+    std::vector<std::uint32_t> touched;
     const auto mesh_start = std::chrono::steady_clock::now();
-    // Rounds: mesh every surface cell; split the cells that ask for it (while allowed); force
-    // to fan mode the direct pieces of cells with several loops that stay; until nothing
-    // changes. Forcing only grows a finite set, so the rounds end even past max_rounds.
+    // Rounds: mesh the surface cells whose neighbourhood changed; split the cells that ask for
+    // it (while allowed); force to fan mode the direct pieces of cells with several loops that
+    // stay; until nothing changes. Forcing only grows a finite set, so the rounds end even
+    // past max_rounds.
     for (int round = 0;; ++round) {
       surface_cells.clear();
       for (std::uint32_t i = 0; i < tree.cells().size(); ++i)
         if (tree.cell(i).kind == CellKind::Surface) surface_cells.push_back(i);
-      outputs.assign(surface_cells.size(), CellOutput{});
+      kept.resize(tree.cells().size());
+      dirty.resize(tree.cells().size(), 1);
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, surface_cells.size(), 8), [&](const auto& r) {
         CellMesher& m = meshers.local();
-        for (std::size_t i = r.begin(); i != r.end(); ++i) m.mesh(tree.cell(surface_cells[i]), outputs[i]);
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          const std::uint32_t c = surface_cells[i];
+          if (dirty[c]) m.mesh(tree.cell(c), kept[c]);
+        }
       });
+      std::fill(dirty.begin(), dirty.end(), 0);
       stats.rounds = round + 1;
       std::size_t triangles = 0, wanting = 0;
-      for (const CellOutput& o : outputs) triangles += o.triangles.size();
-      for (std::size_t i = 0; i < surface_cells.size(); ++i)
-        wanting += outputs[i].wants_split && tree.cell(surface_cells[i]).level < min_level;
+      for (std::uint32_t c : surface_cells) {
+        triangles += kept[c].triangles.size();
+        wanting += kept[c].wants_split && tree.cell(c).level < min_level;
+      }
       bool may_split = wanting > 0;
       if (may_split && round >= settings.max_rounds) {
         add_limit(stats, "rounds");
@@ -212,10 +216,10 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
       }
       std::vector<std::uint32_t> split;
       std::vector<implicit::PieceId> force;
-      for (std::size_t i = 0; i < surface_cells.size(); ++i) {
-        const CellOutput& o = outputs[i];
-        if (may_split && o.wants_split && tree.cell(surface_cells[i]).level < min_level) {
-          split.push_back(surface_cells[i]);
+      for (std::uint32_t c : surface_cells) {
+        const CellOutput& o = kept[c];
+        if (may_split && o.wants_split && tree.cell(c).level < min_level) {
+          split.push_back(c);
           stats.splits_for_loops += o.multi_loop;
           stats.splits_for_accuracy += o.inaccurate;
           stats.splits_for_folds += o.folded;
@@ -225,11 +229,34 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
       }
       if (settings.progress) settings.progress(0.2 + 0.7 * std::min(1.0, (round + 1.0) / (settings.max_rounds + 1)));
       if (split.empty() && force.empty()) break;
+      // Cells whose pieces or face corners change: every surface leaf touching a split cell
+      // (after the split: its children too) or a forced piece.
+      for (std::uint32_t c : split) {
+        const Cell& cell = tree.cell(c);
+        const std::uint32_t sz = cell.size();
+        touched.clear();
+        tree.surface_leaves_touching(cell.corner, {cell.corner[0] + sz, cell.corner[1] + sz, cell.corner[2] + sz}, touched);
+        for (std::uint32_t t : touched) dirty[t] = 1;
+      }
       if (!split.empty()) tree.split(split, stats);
+      dirty.resize(tree.cells().size(), 1);  // the children
+      for (const implicit::PieceId& p : force) {
+        std::array<std::uint32_t, 3> lo = implicit::unpack(p.center), hi = lo;
+        for (int k = 0; k < 3; ++k)
+          if (k != p.axis) {
+            lo[k] -= p.half;
+            hi[k] += p.half;
+          }
+        touched.clear();
+        tree.surface_leaves_touching(lo, hi, touched);
+        for (std::uint32_t t : touched) dirty[t] = 1;
+      }
       fan_pieces.insert(fan_pieces.end(), force.begin(), force.end());
       std::sort(fan_pieces.begin(), fan_pieces.end());
       fan_pieces.erase(std::unique(fan_pieces.begin(), fan_pieces.end()), fan_pieces.end());
     }
+    outputs.clear();
+    for (std::uint32_t c : surface_cells) outputs.push_back(std::move(kept[c]));
     stats.seconds_mesh = seconds_since(mesh_start);
 
     // Statistics of the final octree and cells.

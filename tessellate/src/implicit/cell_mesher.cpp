@@ -151,6 +151,7 @@ void CellMesher::gather_pieces(const Cell& cell) {
         Piece p;
         p.axis = axis;
         p.center = pack(at((u0 + u1) / 2, (v0 + v1) / 2));
+        p.half = (u1 - u0) / 2;
         p.region = {ctx_.frame->point(at(u0, v0)), ctx_.frame->point(at(u1, v1))};
         p.first = static_cast<std::uint32_t>(boundary_.size());
         p.fan = false;
@@ -212,7 +213,7 @@ void CellMesher::choose_modes(CellOutput& out) {
     for (std::uint32_t i = 0; i < p.count; ++i)
       crossings += inside(boundary_[p.first + i]) != inside(boundary_[p.first + (i + 1) % p.count]);
     const bool forced = std::binary_search(ctx_.fan_pieces->begin(), ctx_.fan_pieces->end(),
-                                           PieceId{p.center, static_cast<std::uint8_t>(p.axis)});
+                                           PieceId{p.center, static_cast<std::uint8_t>(p.axis), p.half});
     if (crossings == 0) {
       // Only the center can show an island inside the piece.
       p.fan = inside(p.center) != inside(boundary_[p.first]);
@@ -231,7 +232,7 @@ void CellMesher::choose_modes(CellOutput& out) {
       d.region = p.region;
       polygon_keys_.insert(polygon_keys_.end(), boundary_.begin() + p.first, boundary_.begin() + p.first + p.count);
       polygons_.push_back(d);
-      out.direct_pieces.push_back({p.center, static_cast<std::uint8_t>(p.axis)});
+      out.direct_pieces.push_back({p.center, static_cast<std::uint8_t>(p.axis), p.half});
     }
   }
 }

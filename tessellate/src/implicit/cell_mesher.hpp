@@ -46,10 +46,11 @@ struct VertexKey {
 };
 inline constexpr Key kNoKey = ~Key{0};
 
-// A face piece, by its center and the axis its plane is perpendicular to.
+// A face piece, by its center, the axis its plane is perpendicular to, and its half side.
 struct PieceId {
   Key center;
   std::uint8_t axis;
+  std::uint32_t half;
   auto operator<=>(const PieceId&) const = default;
 };
 
@@ -93,6 +94,7 @@ class CellMesher {
   struct Piece {
     int axis;
     Key center;
+    std::uint32_t half;  // half its side in lattice units
     Region region;
     std::uint32_t first, count;  // boundary points in boundary_, counter-clockwise from outside
     bool fan;

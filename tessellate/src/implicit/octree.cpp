@@ -236,31 +236,79 @@ void Octree::face_pieces(const Cell& c, int axis, int side, std::vector<std::arr
   }
 }
 
+void Octree::surface_leaves_touching(const std::array<std::uint32_t, 3>& lo, const std::array<std::uint32_t, 3>& hi,
+                                     std::vector<std::uint32_t>& out) const {
+  std::vector<std::uint32_t> stack{0};
+  while (!stack.empty()) {
+    const std::uint32_t i = stack.back();
+    stack.pop_back();
+    const Cell& n = cells_[i];
+    bool meets = true;
+    for (int k = 0; k < 3; ++k) meets = meets && n.corner[k] <= hi[k] && lo[k] <= n.corner[k] + n.size();
+    if (!meets) continue;
+    if (n.kind == CellKind::Internal) {
+      for (std::uint32_t b = 0; b < 8; ++b) stack.push_back(n.children + b);
+    } else if (n.kind == CellKind::Surface) {
+      out.push_back(i);
+    }
+  }
+}
+
 void Octree::points_on_segment(int axis, const std::array<std::uint32_t, 3>& on, std::uint32_t t0, std::uint32_t t1,
                                std::vector<std::uint32_t>& out) const {
+  // The segment is an edge of a leaf: t1 - t0 is a power of two L and t0 a multiple of it.
+  // Points inside it can only come from leaves smaller than L in the four cells of size L
+  // around it; descend into each of those that is split, along the line only.
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const std::uint32_t length = t1 - t0;
+  int level = kLatticeBits;
+  while (level > 0 && (kRootSize >> level) < length) --level;
   out.clear();
-  auto touches = [&](const Cell& n) {
-    const std::uint32_t s = n.size();
-    return n.corner[u] <= on[u] && on[u] <= n.corner[u] + s && n.corner[v] <= on[v] && on[v] <= n.corner[v] + s &&
-           n.corner[axis] < t1 && n.corner[axis] + s > t0;
-  };
-  std::uint32_t stack[8 * 32];
-  int top = 0;
-  stack[top++] = 0;
-  while (top > 0) {
-    const Cell& n = cells_[stack[--top]];
-    const std::uint32_t s = n.size();
-    if (n.kind == CellKind::Internal) {
-      for (std::uint32_t b = 0; b < 8; ++b)
-        if (touches(cells_[n.children + b])) stack[top++] = n.children + b;
-      continue;
+  std::uint32_t stack[64];
+  for (int quadrant = 0; quadrant < 4; ++quadrant) {
+    std::array<std::uint32_t, 3> corner{};
+    corner[axis] = t0;
+    if (quadrant & 1) {
+      if (on[u] < length) continue;
+      corner[u] = on[u] - length;
+    } else {
+      if (on[u] >= kRootSize) continue;
+      corner[u] = on[u];
     }
-    const bool on_u = on[u] == n.corner[u] || on[u] == n.corner[u] + s;
-    const bool on_v = on[v] == n.corner[v] || on[v] == n.corner[v] + s;
-    if (!on_u || !on_v) continue;
-    for (std::uint32_t t : {n.corner[axis], n.corner[axis] + s})
-      if (t0 < t && t < t1) out.push_back(t);
+    if (quadrant & 2) {
+      if (on[v] < length) continue;
+      corner[v] = on[v] - length;
+    } else {
+      if (on[v] >= kRootSize) continue;
+      corner[v] = on[v];
+    }
+    std::uint32_t idx = 0;
+    while (cells_[idx].kind == CellKind::Internal && cells_[idx].level < level) {
+      const int shift = kLatticeBits - cells_[idx].level - 1;
+      const std::uint32_t b = ((corner[0] >> shift) & 1u) | (((corner[1] >> shift) & 1u) << 1) |
+                              (((corner[2] >> shift) & 1u) << 2);
+      idx = cells_[idx].children + b;
+    }
+    if (cells_[idx].kind != CellKind::Internal) continue;  // a leaf at least as long as the segment
+    int top = 0;
+    stack[top++] = idx;
+    while (top > 0) {
+      const Cell& n = cells_[stack[--top]];
+      const std::uint32_t s = n.size();
+      if (n.kind != CellKind::Internal) {
+        for (std::uint32_t t : {n.corner[axis], n.corner[axis] + s})
+          if (t0 < t && t < t1) out.push_back(t);
+        continue;
+      }
+      // Children along the line: the ones whose u and v ranges end or start on it.
+      for (std::uint32_t b = 0; b < 8; ++b) {
+        const Cell& ch = cells_[n.children + b];
+        const std::uint32_t cs = ch.size();
+        const bool on_u = ch.corner[u] == on[u] || ch.corner[u] + cs == on[u];
+        const bool on_v = ch.corner[v] == on[v] || ch.corner[v] + cs == on[v];
+        if (on_u && on_v) stack[top++] = n.children + b;
+      }
+    }
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -69,6 +69,10 @@ class Octree {
   // when the face is on the root boundary.
   void face_pieces(const Cell& c, int axis, int side, std::vector<std::array<std::uint32_t, 4>>& out) const;
 
+  // The surface leaves whose closed box meets the closed lattice box [lo, hi].
+  void surface_leaves_touching(const std::array<std::uint32_t, 3>& lo, const std::array<std::uint32_t, 3>& hi,
+                               std::vector<std::uint32_t>& out) const;
+
   // Lattice points that are corners of leaves, on the line parallel to `axis` through the
   // lattice point `on` (its axis coordinate ignored), strictly between t0 and t1; ascending.
   void points_on_segment(int axis, const std::array<std::uint32_t, 3>& on, std::uint32_t t0, std::uint32_t t1,
