@@ -2,6 +2,7 @@
 #include "commands.hpp"
 
 #include "genmod/models/gallery.hpp"
+#include "genmod/models/implicit_gallery.hpp"
 
 #include <cstdio>
 
@@ -12,6 +13,14 @@ int run_list(std::span<const std::string> args) {
   if (!args.empty()) throw UsageError("unexpected argument '" + args[0] + "'");
   for (const models::Model& m : models::gallery()) {
     std::printf("%s\n  %s\n", m.name.c_str(), m.description.c_str());
+    for (const models::ModelParameter& p : m.parameters)
+      std::printf("    %-14s %-8g %s\n", p.name.c_str(), p.value, p.doc.c_str());
+  }
+  std::printf("\nimplicit models (solid where f < 0; genmod mesh NAME [--min-feature H] meshes them in their box)\n");
+  for (const models::ImplicitModel& m : models::implicit_gallery()) {
+    std::printf("%s (implicit)\n  %s\n  box [%g, %g] x [%g, %g] x [%g, %g], min_feature %g\n", m.name.c_str(),
+                m.description.c_str(), m.box[0].lo(), m.box[0].hi(), m.box[1].lo(), m.box[1].hi(), m.box[2].lo(),
+                m.box[2].hi(), m.min_feature);
     for (const models::ModelParameter& p : m.parameters)
       std::printf("    %-14s %-8g %s\n", p.name.c_str(), p.value, p.doc.c_str());
   }

@@ -3,6 +3,7 @@
 #include "commands.hpp"
 
 #include "genmod/models/gallery.hpp"
+#include "genmod/models/implicit_gallery.hpp"
 
 #include <array>
 #include <cctype>
@@ -36,7 +37,8 @@ std::pair<std::string, double> parse_param(const std::string& text) {
 
 int run_mesh(std::span<const std::string> args) {
   for (const std::string& arg : args)
-    if (arg.size() > 3 && arg.compare(arg.size() - 3, 3, ".vm") == 0) return run_mesh_implicit(args);
+    if ((arg.size() > 3 && arg.compare(arg.size() - 3, 3, ".vm") == 0) || models::find_implicit_model(arg))
+      return run_mesh_implicit(args);
   // --param may repeat: take every occurrence out before the generic scanner sees the rest.
   models::ParameterValues overrides;
   std::vector<std::string> rest;
@@ -86,9 +88,9 @@ const Command kMeshCommand{
     "  -p, --param K=V  set a model parameter (repeatable; defaults from `genmod list`)\n"
     "  --res N          lattice samples per direction, 3..4096 (default 64)\n"
     "  -o, --output     mesh file to write; the format follows the extension (.obj .ply .stl .off)\n"
-    "implicit models (MODEL.vm, solid where f < 0; the mesh bounds the solid within the box):\n"
-    "  --box x0,y0,z0,x1,y1,z1  region to mesh (default -1,-1,-1,1,1,1)\n"
-    "  --min-feature H  smallest cell edge (required)\n"
+    "implicit models (MODEL.vm or an implicit gallery name; the mesh bounds the solid f < 0 in the box):\n"
+    "  --box x0,y0,z0,x1,y1,z1  region to mesh (default: the model's box, or -1,-1,-1,1,1,1)\n"
+    "  --min-feature H  smallest cell edge (required for .vm files)\n"
     "  --tolerance E    largest vertex distance from the surface (default H)\n"
     "  --max-cell C     largest cell holding surface (default box / 8)\n"
     "  --max-cells N, --max-seconds S  limits (reported when reached)\n"

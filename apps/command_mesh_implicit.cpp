@@ -3,6 +3,7 @@
 #include "commands.hpp"
 #include "model_file.hpp"
 
+#include "genmod/models/implicit_gallery.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/mesh.hpp"
 #include "genmod/tessellate/validate.hpp"
@@ -73,19 +74,37 @@ void check_writable(const std::string& output) {
 }  // namespace
 
 int run_mesh_implicit(std::span<const std::string> args) {
+  // --param may repeat: take every occurrence out before the generic scanner sees the rest.
+  models::ParameterValues overrides;
+  std::vector<std::string> rest;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--param" || args[i] == "-p") {
+      if (i + 1 >= args.size()) throw UsageError("option " + args[i] + " needs a value");
+      const std::string& text = args[++i];
+      const std::size_t eq = text.find('=');
+      if (eq == std::string::npos || eq == 0) throw UsageError("--param expects NAME=VALUE, got '" + text + "'");
+      const std::string name = text.substr(0, eq);
+      if (overrides.count(name)) throw UsageError("--param " + name + " is given twice");
+      overrides[name] = parse_number("--param " + name, text.substr(eq + 1));
+    } else {
+      rest.push_back(args[i]);
+    }
+  }
   static constexpr std::array<const char*, 2> kFlags{"--no-sharp", "--no-check"};
   static constexpr std::array<const char*, 9> kValued{"--box",       "--min-feature", "--tolerance",
                                                       "--max-cell",  "--max-seconds", "--threads",
                                                       "-o",          "--output",      "--max-cells"};
-  const Arguments a(args, kFlags, kValued);
+  const Arguments a(rest, kFlags, kValued);
   if (a.positional().size() != 1)
-    throw UsageError("expected one model file, got " + std::to_string(a.positional().size()) + " arguments");
+    throw UsageError("expected one model, got " + std::to_string(a.positional().size()) + " arguments");
   const std::string& path = a.positional()[0];
+  const models::ImplicitModel* model = models::find_implicit_model(path);
+  if (!model && !overrides.empty()) throw UsageError("--param applies to gallery models, not to " + path);
   const std::optional<std::string> output = a.value({"-o", "--output"});
   if (!output) throw UsageError("missing output file (-o FILE)");
-  if (!a.value({"--min-feature"})) throw UsageError("missing --min-feature H (the smallest cell edge)");
+  if (!model && !a.value({"--min-feature"})) throw UsageError("missing --min-feature H (the smallest cell edge)");
   ImplicitMeshSettings s;
-  s.min_feature = positive_option(a, {"--min-feature"}, 0, false);
+  s.min_feature = positive_option(a, {"--min-feature"}, model ? model->min_feature : 0.0, false);
   s.tolerance = positive_option(a, {"--tolerance"}, 0, true);
   s.max_cell = positive_option(a, {"--max-cell"}, 0, true);
   s.max_seconds = positive_option(a, {"--max-seconds"}, 0, true);
@@ -93,10 +112,21 @@ int run_mesh_implicit(std::span<const std::string> args) {
   s.threads = a.int_value({"--threads"}, 0, 0, 1024);
   s.sharp_features = !a.has("--no-sharp");
   const std::optional<std::string> box_text = a.value({"--box"});
-  const Box3 box = box_text ? parse_box(*box_text) : Box3{Interval(-1, 1), Interval(-1, 1), Interval(-1, 1)};
+  const Box3 box = box_text ? parse_box(*box_text)
+                 : model  ? model->box
+                          : Box3{Interval(-1, 1), Interval(-1, 1), Interval(-1, 1)};
   check_writable(*output);
 
-  const Fn f = load_model(path);
+  Fn f;
+  if (model) {
+    try {
+      f = models::build_implicit_model(*model, overrides);
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(e.what());
+    }
+  } else {
+    f = load_model(path);
+  }
   const auto start = std::chrono::steady_clock::now();
   ImplicitMesh result;
   try {

@@ -7,3 +7,4 @@
 #include "genmod/solvers/solvers.hpp"
 #include "genmod/tessellate/tessellate.hpp"
 #include "genmod/models/gallery.hpp"
+#include "genmod/models/implicit_gallery.hpp"

@@ -47,21 +47,26 @@ const Model& find_model(const std::string& name) {
   throw std::invalid_argument("unknown model '" + name + "' (known models: " + known + ")");
 }
 
-ParameterValues resolve_parameters(const Model& model, const ParameterValues& overrides) {
+ParameterValues resolve_parameters(const std::string& model_name, const std::vector<ModelParameter>& parameters,
+                                   const ParameterValues& overrides) {
   ParameterValues values;
-  for (const ModelParameter& p : model.parameters) values[p.name] = p.value;
+  for (const ModelParameter& p : parameters) values[p.name] = p.value;
   for (const auto& [name, value] : overrides) {
     if (values.find(name) == values.end()) {
       std::string known;
-      for (const ModelParameter& p : model.parameters) known += (known.empty() ? "" : ", ") + p.name;
-      throw std::invalid_argument("model '" + model.name + "' has no parameter '" + name +
+      for (const ModelParameter& p : parameters) known += (known.empty() ? "" : ", ") + p.name;
+      throw std::invalid_argument("model '" + model_name + "' has no parameter '" + name +
                                   "' (its parameters: " + (known.empty() ? "none" : known) + ")");
     }
     if (!std::isfinite(value))
-      throw std::invalid_argument("parameter '" + name + "' of model '" + model.name + "' must be finite");
+      throw std::invalid_argument("parameter '" + name + "' of model '" + model_name + "' must be finite");
     values[name] = value;
   }
   return values;
+}
+
+ParameterValues resolve_parameters(const Model& model, const ParameterValues& overrides) {
+  return resolve_parameters(model.name, model.parameters, overrides);
 }
 
 Fn build_model(const Model& model, const ParameterValues& overrides) {

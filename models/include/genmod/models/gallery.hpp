@@ -65,6 +65,9 @@ const Model& find_model(const std::string& name);
 // does not have (the message names it, the model and the model's parameters) or a non-finite
 // value.
 ParameterValues resolve_parameters(const Model& model, const ParameterValues& overrides = {});
+// The same for any named parameter list (the implicit gallery's models too).
+ParameterValues resolve_parameters(const std::string& model_name, const std::vector<ModelParameter>& parameters,
+                                   const ParameterValues& overrides);
 // model.build(resolve_parameters(model, overrides)).
 Fn build_model(const Model& model, const ParameterValues& overrides = {});
 // The surface meshed with mesh_parametric on an n x n lattice over the model's domain, with

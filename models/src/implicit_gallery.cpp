@@ -1,0 +1,93 @@
+// The implicit gallery (implicit_gallery.hpp).
+#include "genmod/models/implicit_gallery.hpp"
+
+#include "genmod/operators/shapes.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace genmod::models {
+namespace {
+
+const Fn X = x(0), Y = x(1), Z = x(2);
+
+double positive(const ParameterValues& p, const char* name) {
+  const double v = p.at(name);
+  if (!(v > 0)) throw std::invalid_argument(std::string("parameter '") + name + "' must be > 0, got " + std::to_string(v));
+  return v;
+}
+
+Box3 cube(double h) { return {Interval(-h, h), Interval(-h, h), Interval(-h, h)}; }
+
+// libfive's benchmark: s = max(|p| - radius, gyroid(frequency)), thickened to
+// min(s, 2 sqrt|s| - shell) (the solid s < shell^2 / 4), as data/sphere_gyroid.vm writes it.
+Fn sphere_gyroid(const ParameterValues& p) {
+  const double k = positive(p, "frequency"), shell = positive(p, "shell");
+  const Fn g = sin(k * X) * cos(k * Y) + sin(k * Y) * cos(k * Z) + sin(k * Z) * cos(k * X);
+  const Fn s = max(sqrt(square(X) + square(Y) + square(Z)) - positive(p, "radius"), g);
+  return min(s, 2.0 * sqrt(abs(s)) - shell);
+}
+
+Fn tanglecube(const ParameterValues& p) {
+  const double a = p.at("a"), c = p.at("c");
+  auto term = [&](const Fn& t) { return square(square(t)) - a * square(t); };
+  return term(X) + term(Y) + term(Z) + c;
+}
+
+Fn drilled_block(const ParameterValues& p) {
+  const double h = positive(p, "half_side"), r = positive(p, "hole_radius");
+  if (r >= h) throw std::invalid_argument("parameter 'hole_radius' must be below 'half_side'");
+  return csg_difference(implicit_box(cat({h, h, h})), implicit_cylinder(r, 2 * h));
+}
+
+// f = threshold - sum exp(-sharpness |p - q_i|), negative near the four centers.
+Fn blobby(const ParameterValues& p) {
+  const double d = positive(p, "spacing"), b = positive(p, "sharpness"), t = positive(p, "threshold");
+  const double centers[4][3] = {{-d, -d, 0}, {d, -d, 0.2 * d}, {-d, d, -0.2 * d}, {d, d, 0}};
+  Fn sum = 0.0;
+  for (const auto& q : centers) sum = sum + exp(-b * sqrt(square(X - q[0]) + square(Y - q[1]) + square(Z - q[2])));
+  return t - sum;
+}
+
+Fn gyroid_sheet(const ParameterValues& p) {
+  return implicit_gyroid(positive(p, "frequency"), positive(p, "thickness"));
+}
+
+}  // namespace
+
+const std::vector<ImplicitModel>& implicit_gallery() {
+  static const std::vector<ImplicitModel> models = {
+      {"sphere_gyroid",
+       "libfive's meshing benchmark: a gyroid inside a sphere, thickened (data/sphere_gyroid.vm)",
+       {{"radius", 3.0, "sphere radius"},
+        {"frequency", 2.0, "gyroid frequency k in sin(k x) cos(k y) + ..."},
+        {"shell", 0.5, "thickening: the solid is s < shell^2 / 4"}},
+       sphere_gyroid, cube(5.0), 0.05},
+      {"tanglecube", "the tanglecube quartic x^4 - a x^2 + y^4 - a y^2 + z^4 - a z^2 + c < 0 (genus 5)",
+       {{"a", 5.0, "quadratic coefficient"}, {"c", 10.0, "constant"}}, tanglecube, cube(2.5), 0.05},
+      {"drilled_block", "a cube with a round hole through it: sharp edges and a genus-1 solid",
+       {{"half_side", 1.0, "half the cube's side"}, {"hole_radius", 0.5, "radius of the hole along z"}},
+       drilled_block, cube(1.5), 0.02},
+      {"blobby", "four blended spheres, the blobby surface of the thesis's Fig 5.29",
+       {{"spacing", 1.0, "centers at (+-spacing, +-spacing)"},
+        {"sharpness", 4.0, "decay of each term exp(-sharpness r)"},
+        {"threshold", 0.5, "the surface is sum = threshold"}},
+       blobby, cube(2.0), 0.02},
+      {"gyroid_sheet", "a gyroid sheet |g| < thickness clipped by the box",
+       {{"frequency", 3.0, "gyroid frequency"}, {"thickness", 0.3, "half thickness in g"}}, gyroid_sheet,
+       cube(1.0), 0.02},
+  };
+  return models;
+}
+
+const ImplicitModel* find_implicit_model(const std::string& name) {
+  for (const ImplicitModel& m : implicit_gallery())
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+Fn build_implicit_model(const ImplicitModel& model, const ParameterValues& overrides) {
+  return model.build(resolve_parameters(model.name, model.parameters, overrides));
+}
+
+}  // namespace genmod::models
