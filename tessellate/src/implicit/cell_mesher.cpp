@@ -586,6 +586,40 @@ bool CellMesher::snap(const Vec3& start, Vec3& apex, double& error) {
   return true;
 }
 
+bool CellMesher::certify(const Vec3& start, std::span<const Vec3> normals, Vec3& apex, double& error) {
+  // A sharp point stays where it is when g changes sign within the tolerance of it along the
+  // mean of the normals that meet there.
+  const double margin = 1e-4 * cell_size_;
+  Vec3 x = start, n{0, 0, 0};
+  for (const Vec3& m : normals)
+    for (int k = 0; k < 3; ++k) n[k] += m[k];
+  const double len = std::sqrt(dot(n, n));
+  if (!(len > 0)) return false;
+  for (int k = 0; k < 3; ++k) {
+    x[k] = std::clamp(x[k], cell_lo_[k] + margin, cell_hi_[k] - margin);
+    n[k] /= len;
+  }
+  Vec3 probe[3] = {x, x, x};
+  for (int k = 0; k < 3; ++k) {
+    probe[1][k] = std::clamp(x[k] + 0.999 * ctx_.tolerance * n[k], cell_lo_[k], cell_hi_[k]);
+    probe[2][k] = std::clamp(x[k] - 0.999 * ctx_.tolerance * n[k], cell_lo_[k], cell_hi_[k]);
+  }
+  std::vector<double> g;
+  evaluate(probe, g);
+  if (std::isnan(g[0])) return false;
+  apex = x;
+  if (g[0] == 0.0) {
+    error = 0.0;
+    return true;
+  }
+  for (int side = 1; side <= 2; ++side)
+    if (is_inside(g[side]) != is_inside(g[0])) {
+      error = distance(x, probe[side]);
+      return true;
+    }
+  return false;
+}
+
 void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, CellOutput& out) {
   // The apex: the quadric point of the loop's points with normals, or else the loop's
   // centroid, moved onto the surface along the gradient; the first candidate that lands on
@@ -600,9 +634,19 @@ void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, 
       nrm.push_back(normal_[i]);
     }
   }
-  std::vector<Vec3> starts;
-  if (ctx_.sharp_features && !pts.empty()) starts.push_back(solve_qef(pts, nrm));
-  starts.push_back(centroid);
+  // Candidates in order: a sharp quadric point (an edge or corner) where it is, then the
+  // quadric point and the centroid moved onto the surface.
+  struct Start {
+    Vec3 point;
+    bool in_place;
+  };
+  std::vector<Start> starts;
+  if (ctx_.sharp_features && !pts.empty()) {
+    const QefPoint q = solve_qef(pts, nrm);
+    if (q.rank >= 2) starts.push_back({q.point, true});
+    starts.push_back({q.point, false});
+  }
+  starts.push_back({centroid, false});
   auto folds = [&](const Vec3& apex) {
     for (std::size_t k = 0; k < loop.size(); ++k) {
       const std::uint32_t a = loop[k], b = loop[(k + 1) % loop.size()];
@@ -616,10 +660,10 @@ void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, 
   double apex_error = -1.0;
   bool chosen = false;
   for (int pass = 0; pass < 2 && !chosen; ++pass)
-    for (const Vec3& start : starts) {
+    for (const Start& start : starts) {
       Vec3 candidate;
       double error = -1.0;
-      const bool on_surface = snap(start, candidate, error);
+      const bool on_surface = start.in_place ? certify(start.point, nrm, candidate, error) : snap(start.point, candidate, error);
       if (!on_surface && pass == 0) continue;
       if (pass == 0 && folds(candidate)) continue;
       apex = candidate;

@@ -140,6 +140,9 @@ class CellMesher {
   std::uint32_t vertex(CellOutput& out, const VertexKey& key, const Vec3& p, double error);
   // Moves `start` onto the surface along the gradient; false when no root is within reach.
   bool snap(const Vec3& start, Vec3& apex, double& error);
+  // Keeps `start` (clamped into the cell) when g changes sign within the tolerance along the
+  // mean of `normals`; false otherwise.
+  bool certify(const Vec3& start, std::span<const Vec3> normals, Vec3& apex, double& error);
   void cone(const Cell& cell, const std::vector<std::uint32_t>& loop, CellOutput& out);
   void tetrahedra(const Cell& cell, CellOutput& out);
   Region cell_region() const;

@@ -4,7 +4,7 @@
 
 namespace genmod::implicit {
 
-Vec3 solve_qef(std::span<const Vec3> points, std::span<const Vec3> normals) {
+QefPoint solve_qef(std::span<const Vec3> points, std::span<const Vec3> normals) {
   Eigen::Vector3d mass = Eigen::Vector3d::Zero();
   for (const Vec3& p : points) mass += Eigen::Vector3d(p[0], p[1], p[2]);
   mass /= static_cast<double>(points.size());
@@ -20,16 +20,20 @@ Vec3 solve_qef(std::span<const Vec3> points, std::span<const Vec3> normals) {
   const Eigen::Vector3d lambda = eig.eigenvalues();
   const double largest = lambda.cwiseAbs().maxCoeff();
   Eigen::Vector3d x = mass;
+  int rank = 0;
   if (largest > 0.0) {
     // Truncated pseudo-inverse: a direction is constrained when its eigenvalue is at least
     // 10% of the largest (about 18 degrees between two planes).
     const Eigen::Vector3d rhs = eig.eigenvectors().transpose() * b;
     Eigen::Vector3d y = Eigen::Vector3d::Zero();
     for (int k = 0; k < 3; ++k)
-      if (lambda[k] >= 0.1 * largest) y[k] = rhs[k] / lambda[k];
+      if (lambda[k] >= 0.1 * largest) {
+        y[k] = rhs[k] / lambda[k];
+        ++rank;
+      }
     x += eig.eigenvectors() * y;
   }
-  return {x[0], x[1], x[2]};
+  return {{x[0], x[1], x[2]}, rank};
 }
 
 }  // namespace genmod::implicit

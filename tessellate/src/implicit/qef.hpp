@@ -11,6 +11,11 @@
 
 namespace genmod::implicit {
 
-Vec3 solve_qef(std::span<const Vec3> points, std::span<const Vec3> normals);
+struct QefPoint {
+  Vec3 point;
+  int rank;  // independent planes: 1 smooth, 2 an edge, 3 a corner
+};
+
+QefPoint solve_qef(std::span<const Vec3> points, std::span<const Vec3> normals);
 
 }  // namespace genmod::implicit
