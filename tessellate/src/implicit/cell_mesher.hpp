@@ -145,6 +145,13 @@ class CellMesher {
   bool certify(const Vec3& start, std::span<const Vec3> normals, Vec3& apex, double& error);
   void cone(const Cell& cell, const std::vector<std::uint32_t>& loop, CellOutput& out);
   void tetrahedra(const Cell& cell, CellOutput& out);
+  struct Accuracy {
+    bool inaccurate = false, folded = false;
+  };
+  Accuracy accuracy(const CellOutput& out, std::span<const std::array<std::uint32_t, 3>> triangles);
+  // Triangles of the loop without an interior vertex; false when that is not provably valid.
+  bool triangulate_loop(const CellOutput& out, const std::vector<std::uint32_t>& loop,
+                        std::vector<std::array<std::uint32_t, 3>>& triangles);
   Region cell_region() const;
 
   const MeshContext& ctx_;
@@ -160,6 +167,7 @@ class CellMesher {
   std::vector<Key> polygon_keys_;
   std::vector<Key> sample_keys_;
   std::vector<double> sample_g_;
+  std::vector<std::array<std::uint32_t, 3>> loop_triangles_;
   std::vector<Vec3> normal_;  // unit normal at each output vertex of the cell (0 if none)
   // Evaluation scratch.
   std::vector<double> xs_, ys_, zs_, fs_, gx_, gy_, gz_;

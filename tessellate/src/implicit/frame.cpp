@@ -28,9 +28,19 @@ double Frame::clip(const Vec3& p) const noexcept {
 }
 
 Interval Frame::clip(const std::array<Interval, 3>& box, std::array<int, 3>* active) const noexcept {
+  namespace id = interval_detail;
   std::array<Interval, 3> term;
-  for (int k = 0; k < 3; ++k) term[k] = abs(box[k] - Interval(center_[k])) - Interval(half_[k]);
-  Interval d = max(max(term[0], term[1]), term[2]);
+  Interval d;
+  {
+    const RoundingScope up;  // one mode switch for the whole enclosure
+    id::Raw m;
+    for (int k = 0; k < 3; ++k) {
+      const id::Raw t = boost::numeric::abs(id::raw(box[k]) - id::Raw(center_[k])) - id::Raw(half_[k]);
+      term[k] = id::cook(t);
+      m = k == 0 ? t : boost::numeric::max(m, t);
+    }
+    d = id::cook(m);
+  }
   if (active) {
     for (int k = 0; k < 3; ++k) {
       if (term[k].hi() < d.lo()) {

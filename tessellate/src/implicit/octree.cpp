@@ -28,10 +28,22 @@ std::array<Interval, 3> cell_box(const Frame& frame, const Cell& c) {
 
 // Plantinga and Vegter's test: any two gradients in G have a positive dot product.
 bool normals_in_a_cone(const std::array<Interval, 3>& g) {
-  Interval dot = g[0] * g[0];
-  dot += g[1] * g[1];
-  dot += g[2] * g[2];
-  return dot.lo() > 0.0;
+  namespace id = interval_detail;
+  const RoundingScope up;
+  id::Raw dot = id::raw(g[0]) * id::raw(g[0]);
+  dot += id::raw(g[1]) * id::raw(g[1]);
+  dot += id::raw(g[2]) * id::raw(g[2]);
+  return dot.lower() > 0.0;
+}
+
+// The mean value form f(m) + sum g_k (X_k - m_k).
+Interval mean_value_form(const Interval& fm, const std::array<Interval, 3>& g, const std::array<Interval, 3>& box,
+                         const std::array<Interval, 3>& m) {
+  namespace id = interval_detail;
+  const RoundingScope up;
+  id::Raw sum = id::raw(fm);
+  for (int k = 0; k < 3; ++k) sum += id::raw(g[k]) * (id::raw(box[k]) - id::raw(m[k]));
+  return id::cook(sum);
 }
 
 Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext& ctx, ClassifyWorker& w) {
@@ -69,9 +81,7 @@ Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext&
       for (int k = 0; k < 3; ++k) center[k] = Interval(box[k].mid());
       const Interval fm = w.intervals.eval(tapes.value, center)[0];
       if (w.intervals.errors()[0] == kNoError) {
-        Interval mv = fm;
-        for (int k = 0; k < 3; ++k) mv += g[k] * (box[k] - center[k]);
-        f = intersect(f, mv);
+        f = intersect(f, mean_value_form(fm, g, box, center));
         if (f.lo() >= 0.0) return d;
         if (std::max(f.hi(), s.hi()) < 0.0) {
           d.kind = CellKind::Inside;
@@ -192,47 +202,66 @@ void Octree::split(const std::vector<std::uint32_t>& surface_cells, ImplicitMesh
   classify_all(children, /*allow_split=*/false, stats);
 }
 
-void Octree::face_pieces(const Cell& c, int axis, int side, std::vector<std::array<std::uint32_t, 4>>& out) const {
+namespace {
+
+// From node `idx`, down to the node of `level` holding lattice point q (or a leaf above).
+std::uint32_t descend(const std::vector<Cell>& cells, std::uint32_t idx, const std::array<std::uint32_t, 3>& q,
+                      int level) {
+  while (cells[idx].kind == CellKind::Internal && cells[idx].level < level) {
+    const int shift = kLatticeBits - cells[idx].level - 1;
+    const std::uint32_t b = ((q[0] >> shift) & 1u) | (((q[1] >> shift) & 1u) << 1) | (((q[2] >> shift) & 1u) << 2);
+    idx = cells[idx].children + b;
+  }
+  return idx;
+}
+
+}  // namespace
+
+Octree::Neighborhood Octree::neighborhood(const Cell& c) const {
+  Neighborhood nb;
+  const std::int64_t size = c.size();
+  for (int dz = -1; dz <= 1; ++dz)
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const std::int64_t q[3] = {c.corner[0] + dx * size, c.corner[1] + dy * size, c.corner[2] + dz * size};
+        const int slot = 9 * (dz + 1) + 3 * (dy + 1) + (dx + 1);
+        if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= kRootSize || q[1] >= kRootSize || q[2] >= kRootSize) {
+          nb[static_cast<std::size_t>(slot)] = kNone;
+          continue;
+        }
+        nb[static_cast<std::size_t>(slot)] =
+            descend(cells_, 0, {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1]), static_cast<std::uint32_t>(q[2])},
+                    c.level);
+      }
+  return nb;
+}
+
+void Octree::face_pieces(const Cell& c, const Neighborhood& nb, int axis, int side,
+                         std::vector<std::array<std::uint32_t, 4>>& out) const {
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   const std::uint32_t size = c.size();
   out.clear();
   const std::array<std::uint32_t, 4> own{c.corner[u], c.corner[v], c.corner[u] + size, c.corner[v] + size};
-  std::array<std::uint32_t, 3> nb = c.corner;
-  if (side > 0) {
-    nb[axis] += size;
-    if (nb[axis] >= kRootSize) {
-      out.push_back(own);
-      return;
-    }
-  } else {
-    if (nb[axis] == 0) {
-      out.push_back(own);
-      return;
-    }
-    nb[axis] -= size;
-  }
-  std::uint32_t idx = 0;
-  while (cells_[idx].kind == CellKind::Internal && cells_[idx].level < c.level) {
-    const int shift = kLatticeBits - cells_[idx].level - 1;
-    const std::uint32_t b = ((nb[0] >> shift) & 1u) | (((nb[1] >> shift) & 1u) << 1) | (((nb[2] >> shift) & 1u) << 2);
-    idx = cells_[idx].children + b;
-  }
-  if (cells_[idx].kind != CellKind::Internal) {
+  int offset[3] = {0, 0, 0};
+  offset[axis] = side;
+  const std::uint32_t idx = nb[static_cast<std::size_t>(9 * (offset[2] + 1) + 3 * (offset[1] + 1) + (offset[0] + 1))];
+  if (idx == kNone || cells_[idx].kind != CellKind::Internal) {
     out.push_back(own);
     return;
   }
   // The neighbour is split: its leaves on the side facing c.
   const std::uint32_t facing_bit = side > 0 ? 0u : 1u;
-  std::vector<std::uint32_t> stack{idx};
-  while (!stack.empty()) {
-    const Cell& n = cells_[stack.back()];
-    stack.pop_back();
+  std::uint32_t stack[8 * kLatticeBits];
+  int top = 0;
+  stack[top++] = idx;
+  while (top > 0) {
+    const Cell& n = cells_[stack[--top]];
     if (n.kind != CellKind::Internal) {
       out.push_back({n.corner[u], n.corner[v], n.corner[u] + n.size(), n.corner[v] + n.size()});
       continue;
     }
     for (std::uint32_t b = 0; b < 8; ++b)
-      if (((b >> axis) & 1u) == facing_bit) stack.push_back(n.children + b);
+      if (((b >> axis) & 1u) == facing_bit) stack[top++] = n.children + b;
   }
 }
 
@@ -254,41 +283,35 @@ void Octree::surface_leaves_touching(const std::array<std::uint32_t, 3>& lo, con
   }
 }
 
-void Octree::points_on_segment(int axis, const std::array<std::uint32_t, 3>& on, std::uint32_t t0, std::uint32_t t1,
-                               std::vector<std::uint32_t>& out) const {
-  // The segment is an edge of a leaf: t1 - t0 is a power of two L and t0 a multiple of it.
-  // Points inside it can only come from leaves smaller than L in the four cells of size L
-  // around it; descend into each of those that is split, along the line only.
+void Octree::points_on_segment(const Cell& c, const Neighborhood& nb, int axis, const std::array<std::uint32_t, 3>& on,
+                               std::uint32_t t0, std::uint32_t t1, std::vector<std::uint32_t>& out) const {
+  // Points inside the segment (length L) can only come from leaves smaller than L in the four
+  // cells of size L around it; descend into each of those that is split, along the line only.
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   const std::uint32_t length = t1 - t0;
   int level = kLatticeBits;
   while (level > 0 && (kRootSize >> level) < length) --level;
+  const std::int64_t size = c.size();
   out.clear();
-  std::uint32_t stack[64];
+  std::uint32_t stack[8 * kLatticeBits];
   for (int quadrant = 0; quadrant < 4; ++quadrant) {
-    std::array<std::uint32_t, 3> corner{};
-    corner[axis] = t0;
-    if (quadrant & 1) {
-      if (on[u] < length) continue;
-      corner[u] = on[u] - length;
-    } else {
-      if (on[u] >= kRootSize) continue;
-      corner[u] = on[u];
+    std::array<std::int64_t, 3> q{};
+    q[axis] = t0;
+    q[u] = static_cast<std::int64_t>(on[u]) - (quadrant & 1 ? length : 0);
+    q[v] = static_cast<std::int64_t>(on[v]) - (quadrant & 2 ? length : 0);
+    int slot = 0, scale = 1;
+    bool inside_root = true;
+    for (int k = 0; k < 3; ++k) {
+      inside_root = inside_root && q[k] >= 0 && q[k] < kRootSize;
+      const std::int64_t d = q[k] - c.corner[k];
+      const int o = d < 0 ? -1 : d >= size ? 1 : 0;
+      slot += (o + 1) * scale;
+      scale *= 3;
     }
-    if (quadrant & 2) {
-      if (on[v] < length) continue;
-      corner[v] = on[v] - length;
-    } else {
-      if (on[v] >= kRootSize) continue;
-      corner[v] = on[v];
-    }
-    std::uint32_t idx = 0;
-    while (cells_[idx].kind == CellKind::Internal && cells_[idx].level < level) {
-      const int shift = kLatticeBits - cells_[idx].level - 1;
-      const std::uint32_t b = ((corner[0] >> shift) & 1u) | (((corner[1] >> shift) & 1u) << 1) |
-                              (((corner[2] >> shift) & 1u) << 2);
-      idx = cells_[idx].children + b;
-    }
+    if (!inside_root || nb[static_cast<std::size_t>(slot)] == kNone) continue;
+    const std::uint32_t idx =
+        descend(cells_, nb[static_cast<std::size_t>(slot)],
+                {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1]), static_cast<std::uint32_t>(q[2])}, level);
     if (cells_[idx].kind != CellKind::Internal) continue;  // a leaf at least as long as the segment
     int top = 0;
     stack[top++] = idx;

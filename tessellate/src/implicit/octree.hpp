@@ -63,20 +63,28 @@ class Octree {
   void split(const std::vector<std::uint32_t>& surface_cells, ImplicitMeshStats& stats);
   bool cell_limit_reached() const noexcept { return cells_.size() >= context_.settings->max_cells; }
 
+  // The 27 nodes around a leaf c: entry 9 (dz + 1) + 3 (dy + 1) + (dx + 1) is the node of
+  // c's level (or the leaf above it) at c's corner + (dx, dy, dz) * size, kNone outside the
+  // root; entry 13 is c. The queries below start from it instead of the root.
+  using Neighborhood = std::array<std::uint32_t, 27>;
+  Neighborhood neighborhood(const Cell& c) const;
+
   // The leaves across face (axis, side = +1 / -1) of cell c that touch it, as the squares
   // they cover on that face: (u0, v0, u1, v1) in the face's two other axes (axis + 1, axis + 2
   // mod 3). A single entry equal to c's own face when the neighbour is as large or larger, or
   // when the face is on the root boundary.
-  void face_pieces(const Cell& c, int axis, int side, std::vector<std::array<std::uint32_t, 4>>& out) const;
+  void face_pieces(const Cell& c, const Neighborhood& nb, int axis, int side,
+                   std::vector<std::array<std::uint32_t, 4>>& out) const;
 
   // The surface leaves whose closed box meets the closed lattice box [lo, hi].
   void surface_leaves_touching(const std::array<std::uint32_t, 3>& lo, const std::array<std::uint32_t, 3>& hi,
                                std::vector<std::uint32_t>& out) const;
 
-  // Lattice points that are corners of leaves, on the line parallel to `axis` through the
-  // lattice point `on` (its axis coordinate ignored), strictly between t0 and t1; ascending.
-  void points_on_segment(int axis, const std::array<std::uint32_t, 3>& on, std::uint32_t t0, std::uint32_t t1,
-                         std::vector<std::uint32_t>& out) const;
+  // Lattice points that are corners of leaves, strictly inside the segment along `axis`
+  // from t0 to t1 through the lattice point `on` (its axis coordinate ignored), ascending. The
+  // segment is an edge of a leaf on the boundary of c (t1 - t0 a power of two dividing t0).
+  void points_on_segment(const Cell& c, const Neighborhood& nb, int axis, const std::array<std::uint32_t, 3>& on,
+                         std::uint32_t t0, std::uint32_t t1, std::vector<std::uint32_t>& out) const;
 
  private:
   struct Pending {
