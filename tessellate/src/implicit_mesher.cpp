@@ -165,14 +165,16 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
     const implicit::MeshContext context{&tree,
                                         &frame,
                                         tolerance,
-                                        1e-3 * std::min(tolerance, settings.min_feature),
+                                        1e-2 * std::min(tolerance, settings.min_feature),
                                         settings.sharp_features,
                                         std::cos(settings.feature_angle),
                                         &fan_pieces};
     tbb::enumerable_thread_specific<CellMesher> meshers([&] { return CellMesher(context); });
     std::vector<std::uint32_t> surface_cells;
     std::vector<CellOutput> outputs;      // per surface cell, in surface_cells order
-    std::vector<CellOutput> kept;         // per octree cell: the last output of a clean cell
+    // The last output of each surface cell, in a slot per cell (slot_of[cell]).
+    std::vector<CellOutput> kept;
+    std::vector<std::uint32_t> slot_of;
     std::vector<char> dirty(tree.cells().size(), 1);
     std::vector<std::uint32_t> touched;
     const auto mesh_start = std::chrono::steady_clock::now();
@@ -184,21 +186,26 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
       surface_cells.clear();
       for (std::uint32_t i = 0; i < tree.cells().size(); ++i)
         if (tree.cell(i).kind == CellKind::Surface) surface_cells.push_back(i);
-      kept.resize(tree.cells().size());
+      slot_of.resize(tree.cells().size(), implicit::kNone);
+      for (std::uint32_t c : surface_cells)
+        if (slot_of[c] == implicit::kNone) {
+          slot_of[c] = static_cast<std::uint32_t>(kept.size());
+          kept.emplace_back();
+        }
       dirty.resize(tree.cells().size(), 1);
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, surface_cells.size(), 8), [&](const auto& r) {
         CellMesher& m = meshers.local();
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
           const std::uint32_t c = surface_cells[i];
-          if (dirty[c]) m.mesh(tree.cell(c), kept[c]);
+          if (dirty[c]) m.mesh(tree.cell(c), kept[slot_of[c]]);
         }
       });
       std::fill(dirty.begin(), dirty.end(), 0);
       stats.rounds = round + 1;
       std::size_t triangles = 0, wanting = 0;
       for (std::uint32_t c : surface_cells) {
-        triangles += kept[c].triangles.size();
-        wanting += kept[c].wants_split && tree.cell(c).level < min_level;
+        triangles += kept[slot_of[c]].triangles.size();
+        wanting += kept[slot_of[c]].wants_split && tree.cell(c).level < min_level;
       }
       bool may_split = wanting > 0;
       if (may_split && round >= settings.max_rounds) {
@@ -217,12 +224,13 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
       std::vector<std::uint32_t> split;
       std::vector<implicit::PieceId> force;
       for (std::uint32_t c : surface_cells) {
-        const CellOutput& o = kept[c];
+        CellOutput& o = kept[slot_of[c]];
         if (may_split && o.wants_split && tree.cell(c).level < min_level) {
           split.push_back(c);
           stats.splits_for_loops += o.multi_loop;
           stats.splits_for_accuracy += o.inaccurate;
           stats.splits_for_folds += o.folded;
+          o = CellOutput{};  // the cell is gone
         } else {
           force.insert(force.end(), o.direct_pieces.begin(), o.direct_pieces.end());
         }
@@ -256,7 +264,7 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
       fan_pieces.erase(std::unique(fan_pieces.begin(), fan_pieces.end()), fan_pieces.end());
     }
     outputs.clear();
-    for (std::uint32_t c : surface_cells) outputs.push_back(std::move(kept[c]));
+    for (std::uint32_t c : surface_cells) outputs.push_back(std::move(kept[slot_of[c]]));
     stats.seconds_mesh = seconds_since(mesh_start);
 
     // Statistics of the final octree and cells.

@@ -129,11 +129,31 @@ void CellMesher::mesh(const Cell& cell, CellOutput& out) {
   tetrahedra(cell, out);
 }
 
+void CellMesher::side_points(const Cell& cell, const Octree::Neighborhood& nb, int axis,
+                             const std::array<std::uint32_t, 3>& on, std::uint32_t t0, std::uint32_t t1) {
+  // Each side is asked for by the two faces (or pieces) that share it: remember the answers.
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const Side key{axis, on[u], on[v], t0, t1, 0, 0};
+  for (const Side& sd : sides_)
+    if (sd.axis == key.axis && sd.a == key.a && sd.b == key.b && sd.t0 == t0 && sd.t1 == t1) {
+      line_points_.assign(side_store_.begin() + sd.first, side_store_.begin() + sd.first + sd.count);
+      return;
+    }
+  ctx_.octree->points_on_segment(cell, nb, axis, on, t0, t1, line_points_);
+  Side added = key;
+  added.first = static_cast<std::uint32_t>(side_store_.size());
+  added.count = static_cast<std::uint32_t>(line_points_.size());
+  side_store_.insert(side_store_.end(), line_points_.begin(), line_points_.end());
+  sides_.push_back(added);
+}
+
 void CellMesher::gather_pieces(const Cell& cell) {
   const Octree& tree = *ctx_.octree;
   pieces_.clear();
   boundary_.clear();
   sample_keys_.clear();
+  sides_.clear();
+  side_store_.clear();
   const Octree::Neighborhood nb = tree.neighborhood(cell);
   for (int axis = 0; axis < 3; ++axis) {
     const int u = (axis + 1) % 3, v = (axis + 2) % 3;
@@ -158,16 +178,16 @@ void CellMesher::gather_pieces(const Cell& cell) {
         p.fan = false;
         // Counter-clockwise in (u, v), i.e. seen from +axis; reversed below for side -1.
         boundary_.push_back(pack(at(u0, v0)));
-        tree.points_on_segment(cell, nb, u, at(u0, v0), u0, u1, line_points_);
+        side_points(cell, nb, u, at(u0, v0), u0, u1);
         for (std::uint32_t t : line_points_) boundary_.push_back(pack(at(t, v0)));
         boundary_.push_back(pack(at(u1, v0)));
-        tree.points_on_segment(cell, nb, v, at(u1, v0), v0, v1, line_points_);
+        side_points(cell, nb, v, at(u1, v0), v0, v1);
         for (std::uint32_t t : line_points_) boundary_.push_back(pack(at(u1, t)));
         boundary_.push_back(pack(at(u1, v1)));
-        tree.points_on_segment(cell, nb, u, at(u0, v1), u0, u1, line_points_);
+        side_points(cell, nb, u, at(u0, v1), u0, u1);
         for (auto it = line_points_.rbegin(); it != line_points_.rend(); ++it) boundary_.push_back(pack(at(*it, v1)));
         boundary_.push_back(pack(at(u0, v1)));
-        tree.points_on_segment(cell, nb, v, at(u0, v0), v0, v1, line_points_);
+        side_points(cell, nb, v, at(u0, v0), v0, v1);
         for (auto it = line_points_.rbegin(); it != line_points_.rend(); ++it) boundary_.push_back(pack(at(u0, *it)));
         p.count = static_cast<std::uint32_t>(boundary_.size()) - p.first;
         if (side < 0) std::reverse(boundary_.begin() + p.first, boundary_.end());
@@ -333,17 +353,31 @@ void CellMesher::find_roots(std::span<const Vec3> a, std::span<const Vec3> b, st
   // Illinois (modified regula falsi) on all segments at once, with bisection when the outside
   // value is an error or the bracket stops shrinking fast.
   const std::size_t n = a.size();
-  std::vector<double> lo(n, 0.0), hi(n, 1.0), flo(ga.begin(), ga.end()), fhi(gb.begin(), gb.end());
-  std::vector<double> length(n), last_width(n, 2.0);
-  std::vector<int> side(n, 0);
-  std::vector<std::uint32_t> active;
+  RootScratch& rs = roots_;
+  auto& lo = rs.lo;
+  auto& hi = rs.hi;
+  auto& flo = rs.flo;
+  auto& fhi = rs.fhi;
+  auto& length = rs.length;
+  auto& last_width = rs.last_width;
+  auto& side = rs.side;
+  auto& active = rs.active;
+  auto& trial_points = rs.trial_points;
+  auto& trial_t = rs.trial_t;
+  auto& trial_g = rs.trial_g;
+  auto& still = rs.still;
+  lo.assign(n, 0.0);
+  hi.assign(n, 1.0);
+  flo.assign(ga.begin(), ga.end());
+  fhi.assign(gb.begin(), gb.end());
+  length.resize(n);
+  last_width.assign(n, 2.0);
+  side.assign(n, 0);
+  active.clear();
   for (std::size_t i = 0; i < n; ++i) {
     length[i] = distance(a[i], b[i]);
     if (length[i] > ctx_.root_tolerance) active.push_back(static_cast<std::uint32_t>(i));
   }
-  std::vector<Vec3> trial_points;
-  std::vector<double> trial_t, trial_g;
-  std::vector<std::uint32_t> still;
   for (int iteration = 0; iteration < 100 && !active.empty(); ++iteration) {
     trial_points.clear();
     trial_t.clear();

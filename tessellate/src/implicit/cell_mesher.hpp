@@ -118,6 +118,16 @@ class CellMesher {
   };
 
   void gather_pieces(const Cell& cell);
+  // Octree::points_on_segment into line_points_, once per side of the cell's pieces.
+  void side_points(const Cell& cell, const Octree::Neighborhood& nb, int axis, const std::array<std::uint32_t, 3>& on,
+                   std::uint32_t t0, std::uint32_t t1);
+  struct Side {
+    int axis;
+    std::uint32_t a, b, t0, t1;  // the line's two fixed coordinates and the segment
+    std::uint32_t first, count;  // its points in side_store_
+  };
+  std::vector<Side> sides_;
+  std::vector<std::uint32_t> side_store_;
   void choose_modes(CellOutput& out);
   void add_fan_triangles(const Piece& p, std::vector<Polygon>& polygons, std::vector<Key>& keys) const;
   bool inside(Key k) const;
@@ -171,6 +181,12 @@ class CellMesher {
   std::vector<Vec3> normal_;  // unit normal at each output vertex of the cell (0 if none)
   // Evaluation scratch.
   std::vector<double> xs_, ys_, zs_, fs_, gx_, gy_, gz_;
+  struct RootScratch {
+    std::vector<double> lo, hi, flo, fhi, length, last_width, trial_t, trial_g;
+    std::vector<int> side;
+    std::vector<std::uint32_t> active, still;
+    std::vector<Vec3> trial_points;
+  } roots_;
   std::vector<Vec3> fd_points_;
   std::vector<double> fd_g_;
 };

@@ -218,20 +218,47 @@ std::uint32_t descend(const std::vector<Cell>& cells, std::uint32_t idx, const s
 }  // namespace
 
 Octree::Neighborhood Octree::neighborhood(const Cell& c) const {
+  // The 3 x 3 x 3 block of c's size around c lies in the 2 x 2 x 2 block of twice that size
+  // that holds c and extends toward c's position in its parent: find those 8 nodes, then step
+  // one level down.
   Neighborhood nb;
-  const std::int64_t size = c.size();
+  nb.fill(kNone);
+  if (c.level == 0) {
+    nb[13] = 0;
+    return nb;
+  }
+  const std::int64_t size = c.size(), big = 2 * size;
+  std::int64_t base[3];  // low corner of the 2 x 2 x 2 block of parent-sized nodes
+  for (int k = 0; k < 3; ++k) {
+    const std::int64_t parent = (c.corner[k] / big) * big;
+    base[k] = c.corner[k] == parent ? parent - big : parent;
+  }
+  std::uint32_t block[8];
+  for (int b = 0; b < 8; ++b) {
+    const std::int64_t q[3] = {base[0] + (b & 1 ? big : 0), base[1] + (b & 2 ? big : 0), base[2] + (b & 4 ? big : 0)};
+    if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= kRootSize || q[1] >= kRootSize || q[2] >= kRootSize) {
+      block[b] = kNone;
+      continue;
+    }
+    block[b] = descend(cells_, 0, {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1]), static_cast<std::uint32_t>(q[2])},
+                       c.level - 1);
+  }
   for (int dz = -1; dz <= 1; ++dz)
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) {
         const std::int64_t q[3] = {c.corner[0] + dx * size, c.corner[1] + dy * size, c.corner[2] + dz * size};
-        const int slot = 9 * (dz + 1) + 3 * (dy + 1) + (dx + 1);
-        if (q[0] < 0 || q[1] < 0 || q[2] < 0 || q[0] >= kRootSize || q[1] >= kRootSize || q[2] >= kRootSize) {
-          nb[static_cast<std::size_t>(slot)] = kNone;
-          continue;
+        int b = 0;
+        for (int k = 0; k < 3; ++k) b |= (q[k] >= base[k] + big ? 1 : 0) << k;
+        std::uint32_t idx = block[b];
+        if (idx == kNone) continue;
+        if (cells_[idx].kind == CellKind::Internal && cells_[idx].level < c.level) {
+          const int shift = kLatticeBits - cells_[idx].level - 1;
+          const std::uint32_t cb = ((static_cast<std::uint32_t>(q[0]) >> shift) & 1u) |
+                                   (((static_cast<std::uint32_t>(q[1]) >> shift) & 1u) << 1) |
+                                   (((static_cast<std::uint32_t>(q[2]) >> shift) & 1u) << 2);
+          idx = cells_[idx].children + cb;
         }
-        nb[static_cast<std::size_t>(slot)] =
-            descend(cells_, 0, {static_cast<std::uint32_t>(q[0]), static_cast<std::uint32_t>(q[1]), static_cast<std::uint32_t>(q[2])},
-                    c.level);
+        nb[static_cast<std::size_t>(9 * (dz + 1) + 3 * (dy + 1) + (dx + 1))] = idx;
       }
   return nb;
 }
@@ -295,6 +322,8 @@ void Octree::points_on_segment(const Cell& c, const Neighborhood& nb, int axis, 
   out.clear();
   std::uint32_t stack[8 * kLatticeBits];
   for (int quadrant = 0; quadrant < 4; ++quadrant) {
+    // (Quadrants whose node is a leaf of at least the segment's length add nothing; the
+    // descent below finds that out in one step when the node is c's neighbour itself.)
     std::array<std::int64_t, 3> q{};
     q[axis] = t0;
     q[u] = static_cast<std::int64_t>(on[u]) - (quadrant & 1 ? length : 0);
