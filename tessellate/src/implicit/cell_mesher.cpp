@@ -577,8 +577,9 @@ void CellMesher::trace(const std::vector<Polygon>& polygons, const std::vector<K
 }
 
 bool CellMesher::snap(const Vec3& start, Vec3& apex, double& error) {
-  // From `start` (inside the shrunk cell) along the gradient toward the other sign, at most
-  // the tolerance, staying inside the shrunk cell; then the root between.
+  // From `start` (inside the shrunk cell) along the gradient toward the other sign as far as
+  // the shrunk cell allows; then the root between. The root is bracketed, so the vertex is
+  // certified however far it moved.
   const double margin = 1e-4 * cell_size_;
   double lo[3], hi[3];
   Vec3 x = start;
@@ -600,7 +601,7 @@ bool CellMesher::snap(const Vec3& start, Vec3& apex, double& error) {
   if (!(dot(n[0], n[0]) > 0) || std::isnan(g[0])) return false;
   const double s = is_inside(g[0]) ? 1.0 : -1.0;  // toward the other sign
   const Vec3 dir{s * n[0][0], s * n[0][1], s * n[0][2]};
-  double reach = ctx_.tolerance;
+  double reach = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k) {
     if (dir[k] > 0) reach = std::min(reach, (hi[k] - x[k]) / dir[k]);
     if (dir[k] < 0) reach = std::min(reach, (lo[k] - x[k]) / dir[k]);
@@ -617,6 +618,110 @@ bool CellMesher::snap(const Vec3& start, Vec3& apex, double& error) {
   std::vector<double> t, err;
   find_roots(std::span(&a, 1), std::span(&b, 1), std::span(&ga, 1), std::span(&gb, 1), t, err);
   apex = lerp(a, b, t[0]);
+  error = err[0];
+  return true;
+}
+
+bool CellMesher::line_root(const Vec3& start, const Vec3& direction, Vec3& apex, double& error) {
+  // The root nearest to `start` on the line through it along `direction`, inside the shrunk
+  // cell, from samples across the cell.
+  const double len = std::sqrt(dot(direction, direction));
+  if (!(len > 0)) return false;
+  const Vec3 d{direction[0] / len, direction[1] / len, direction[2] / len};
+  const double margin = 1e-4 * cell_size_;
+  double lo[3], hi[3];
+  Vec3 x = start;
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = cell_lo_[k] + margin;
+    hi[k] = cell_hi_[k] - margin;
+    x[k] = std::clamp(x[k], lo[k], hi[k]);
+  }
+  double t_min = -std::numeric_limits<double>::infinity(), t_max = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] > 0) {
+      t_max = std::min(t_max, (hi[k] - x[k]) / d[k]);
+      t_min = std::max(t_min, (lo[k] - x[k]) / d[k]);
+    } else if (d[k] < 0) {
+      t_max = std::min(t_max, (lo[k] - x[k]) / d[k]);
+      t_min = std::max(t_min, (hi[k] - x[k]) / d[k]);
+    }
+  }
+  constexpr int kSamples = 8;
+  std::vector<Vec3> p(2 * kSamples + 1);
+  std::vector<double> t(p.size());
+  for (int i = 0; i <= 2 * kSamples; ++i) {
+    t[static_cast<std::size_t>(i)] = i < kSamples ? t_min * (kSamples - i) / kSamples : t_max * (i - kSamples) / kSamples;
+    for (int k = 0; k < 3; ++k) p[static_cast<std::size_t>(i)][k] = std::clamp(x[k] + t[static_cast<std::size_t>(i)] * d[k], lo[k], hi[k]);
+  }
+  std::vector<double> g;
+  evaluate(p, g);
+  // Pairs of neighbouring samples with a sign change, nearest to the start (index kSamples).
+  for (int step = 0; step < kSamples; ++step)
+    for (int side : {1, -1}) {
+      const int i = kSamples + side * step, j = i + side;
+      if (j < 0 || j > 2 * kSamples) continue;
+      const double gi = g[static_cast<std::size_t>(i)], gj = g[static_cast<std::size_t>(j)];
+      if (std::isnan(gi) || std::isnan(gj) || is_inside(gi) == is_inside(gj)) continue;
+      const bool i_in = is_inside(gi);
+      const Vec3& a = p[static_cast<std::size_t>(i_in ? i : j)];
+      const Vec3& b = p[static_cast<std::size_t>(i_in ? j : i)];
+      const double ga = i_in ? gi : gj, gb = i_in ? gj : gi;
+      std::vector<double> tr, err;
+      find_roots(std::span(&a, 1), std::span(&b, 1), std::span(&ga, 1), std::span(&gb, 1), tr, err);
+      apex = lerp(a, b, tr[0]);
+      error = err[0];
+      return true;
+    }
+  return false;
+}
+
+bool CellMesher::snap_in_tetrahedron(const Vec3& start, const Vec3 (&t)[4], Vec3& apex, double& error) {
+  // Barycentric coordinates are affine: l(start + s d) = l(start) + s dl. Keep every one
+  // above 1% of its value at the start, so the vertex stays strictly inside.
+  const Vec3 e1 = sub(t[1], t[0]), e2 = sub(t[2], t[0]), e3 = sub(t[3], t[0]);
+  const double det = dot(e1, cross(e2, e3));
+  if (det == 0.0) return false;
+  auto barycentric = [&](const Vec3& q, double l[4]) {
+    const Vec3 r = sub(q, t[0]);
+    l[1] = dot(r, cross(e2, e3)) / det;
+    l[2] = dot(e1, cross(r, e3)) / det;
+    l[3] = dot(e1, cross(e2, r)) / det;
+    l[0] = 1.0 - l[1] - l[2] - l[3];
+  };
+  std::vector<double> g, f;
+  std::vector<Vec3> n;
+  const Region whole = cell_region();
+  evaluate(std::span(&start, 1), g, &f);
+  if (std::isnan(g[0])) return false;
+  if (g[0] == 0.0) {
+    apex = start;
+    error = 0.0;
+    return true;
+  }
+  normals(std::span(&start, 1), f, std::span(&whole, 1), n);
+  if (!(dot(n[0], n[0]) > 0)) return false;
+  double l0[4], l1[4];
+  barycentric(start, l0);
+  const double s = is_inside(g[0]) ? 1.0 : -1.0;
+  const Vec3 d{s * n[0][0], s * n[0][1], s * n[0][2]};
+  barycentric({start[0] + d[0], start[1] + d[1], start[2] + d[2]}, l1);
+  double reach = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 4; ++i) {
+    const double rate = l1[i] - l0[i];
+    if (rate < 0) reach = std::min(reach, 0.99 * l0[i] / -rate);
+  }
+  if (!std::isfinite(reach) || !(reach > 0)) return false;
+  const Vec3 y{start[0] + reach * d[0], start[1] + reach * d[1], start[2] + reach * d[2]};
+  std::vector<double> gy;
+  evaluate(std::span(&y, 1), gy);
+  if (std::isnan(gy[0]) || is_inside(gy[0]) == is_inside(g[0])) return false;
+  const bool x_in = is_inside(g[0]);
+  const Vec3& a = x_in ? start : y;
+  const Vec3& b = x_in ? y : start;
+  const double ga = x_in ? g[0] : gy[0], gb = x_in ? gy[0] : g[0];
+  std::vector<double> tr, err;
+  find_roots(std::span(&a, 1), std::span(&b, 1), std::span(&ga, 1), std::span(&gb, 1), tr, err);
+  apex = lerp(a, b, tr[0]);
   error = err[0];
   return true;
 }
@@ -692,6 +797,9 @@ void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, 
     }
   }
   starts.push_back({centroid, false});
+  Vec3 mean{0, 0, 0};
+  for (const Vec3& m : nrm)
+    for (int k = 0; k < 3; ++k) mean[k] += m[k];
   auto folds = [&](const Vec3& apex) {
     for (std::size_t k = 0; k < loop.size(); ++k) {
       const std::uint32_t a = loop[k], b = loop[(k + 1) % loop.size()];
@@ -701,21 +809,37 @@ void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, 
     }
     return false;
   };
-  Vec3 apex{};
-  double apex_error = -1.0;
-  bool chosen = false;
-  for (int pass = 0; pass < 2 && !chosen; ++pass)
-    for (const Start& start : starts) {
-      Vec3 candidate;
-      double error = -1.0;
-      const bool on_surface = start.in_place ? certify(start.point, nrm, candidate, error) : snap(start.point, candidate, error);
-      if (!on_surface && pass == 0) continue;
-      if (pass == 0 && folds(candidate)) continue;
-      apex = candidate;
-      apex_error = on_surface ? error : -1.0;
-      chosen = true;
+  // Each candidate once; the first on the surface without a fold wins, else the first on the
+  // surface, else the first.
+  struct Candidate {
+    Vec3 point;
+    double error;  // < 0: not on the surface
+    bool folds;
+  };
+  std::vector<Candidate> candidates;
+  for (const Start& start : starts) {
+    Candidate c{{}, -1.0, false};
+    const bool on_surface = start.in_place ? certify(start.point, nrm, c.point, c.error)
+                                           : snap(start.point, c.point, c.error) ||
+                                                 line_root(start.point, mean, c.point, c.error);
+    if (!on_surface) c.error = -1.0;
+    c.folds = folds(c.point);
+    if (on_surface && !c.folds) {
+      candidates.assign(1, c);
       break;
     }
+    candidates.push_back(c);
+  }
+  std::size_t best = 0;
+  auto find = [&](bool fold_free) {
+    for (std::size_t i = 0; i < candidates.size(); ++i)
+      if (candidates[i].error >= 0 && (!fold_free || !candidates[i].folds)) return i;
+    return candidates.size();
+  };
+  if (const std::size_t i = find(true); i < candidates.size()) best = i;
+  else if (const std::size_t j = find(false); j < candidates.size()) best = j;
+  const Vec3 apex = candidates[best].point;
+  const double apex_error = candidates[best].error;
   if (apex_error < 0) out.inaccurate = out.wants_split = true;
   const std::uint32_t apex_index = vertex(out, {VertexKind::Apex, pack(cell.corner), 0, 0}, apex, apex_error);
   for (std::size_t k = 0; k < loop.size(); ++k)
@@ -898,7 +1022,12 @@ void CellMesher::tetrahedra(const Cell& cell, CellOutput& out) {
       for (std::uint32_t i : polygon)
         for (int k = 0; k < 3; ++k) c[k] += out.vertices[i].position[k] / static_cast<double>(polygon.size());
       const Key* t = &keys[outer[tet].first];
-      const std::uint32_t apex = vertex(out, {VertexKind::TetApex, t[0], t[1], t[2]}, c, -1.0);
+      const Vec3 corners[4] = {ctx_.frame->point(cc), ctx_.frame->point(t[0]), ctx_.frame->point(t[1]),
+                               ctx_.frame->point(t[2])};
+      Vec3 p = c;
+      double error = -1.0;
+      if (!snap_in_tetrahedron(c, corners, p, error)) p = c;
+      const std::uint32_t apex = vertex(out, {VertexKind::TetApex, t[0], t[1], t[2]}, p, error);
       for (std::size_t k = 0; k < polygon.size(); ++k)
         out.triangles.push_back({apex, polygon[k], polygon[(k + 1) % polygon.size()]});
     }

@@ -150,6 +150,10 @@ class CellMesher {
   std::uint32_t vertex(CellOutput& out, const VertexKey& key, const Vec3& p, double error);
   // Moves `start` onto the surface along the gradient; false when no root is within reach.
   bool snap(const Vec3& start, Vec3& apex, double& error);
+  // The same inside the tetrahedron t (start strictly inside, the result too).
+  bool snap_in_tetrahedron(const Vec3& start, const Vec3 (&t)[4], Vec3& apex, double& error);
+  // The root nearest to `start` on the line through it along `direction` within the cell.
+  bool line_root(const Vec3& start, const Vec3& direction, Vec3& apex, double& error);
   // Keeps `start` (clamped into the cell) when g changes sign within the tolerance along the
   // mean of `normals`; false otherwise.
   bool certify(const Vec3& start, std::span<const Vec3> normals, Vec3& apex, double& error);
