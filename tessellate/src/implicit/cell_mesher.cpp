@@ -89,10 +89,13 @@ void CellMesher::mesh(const Cell& cell, CellOutput& out) {
   std::vector<Vec3> points(sample_keys_.size());
   for (std::size_t i = 0; i < points.size(); ++i) points[i] = ctx_.frame->point(sample_keys_[i]);
   evaluate(points, sample_g_);
+  boundary_g_.resize(boundary_.size());
+  for (std::size_t i = 0; i < boundary_.size(); ++i) boundary_g_[i] = sample(boundary_[i]);
+  for (Piece& p : pieces_) p.center_g = sample(p.center);
   choose_modes(out);
 
   std::vector<Segment> segments;
-  trace(polygons_, polygon_keys_, out, segments);
+  trace(polygons_, polygon_keys_, polygon_g_, out, segments);
 
   // Chain the segments into loops: every trace vertex starts one segment and ends one.
   std::vector<std::uint32_t> next(out.vertices.size(), kNone);
@@ -209,11 +212,13 @@ double CellMesher::sample(Key k) const {
   return sample_g_[static_cast<std::size_t>(it - sample_keys_.begin())];
 }
 
-bool CellMesher::inside(Key k) const { return is_inside(sample(k)); }
 
-void CellMesher::add_fan_triangles(const Piece& p, std::vector<Polygon>& polygons, std::vector<Key>& keys) const {
+void CellMesher::add_fan_triangles(const Piece& p, std::vector<Polygon>& polygons, std::vector<Key>& keys,
+                                   std::vector<double>& values) const {
   for (std::uint32_t i = 0; i < p.count; ++i) {
-    const Key b0 = boundary_[p.first + i], b1 = boundary_[p.first + (i + 1) % p.count];
+    const std::uint32_t j = p.first + i, k = p.first + (i + 1) % p.count;
+    const Key b0 = boundary_[j], b1 = boundary_[k];
+    values.insert(values.end(), {p.center_g, boundary_g_[j], boundary_g_[k]});
     Polygon t;
     t.first = static_cast<std::uint32_t>(keys.size());
     t.count = 3;
@@ -229,20 +234,21 @@ void CellMesher::add_fan_triangles(const Piece& p, std::vector<Polygon>& polygon
 void CellMesher::choose_modes(CellOutput& out) {
   polygons_.clear();
   polygon_keys_.clear();
+  polygon_g_.clear();
   for (Piece& p : pieces_) {
     int crossings = 0;
     for (std::uint32_t i = 0; i < p.count; ++i)
-      crossings += inside(boundary_[p.first + i]) != inside(boundary_[p.first + (i + 1) % p.count]);
+      crossings += is_inside(boundary_g_[p.first + i]) != is_inside(boundary_g_[p.first + (i + 1) % p.count]);
     const bool forced = std::binary_search(ctx_.fan_pieces->begin(), ctx_.fan_pieces->end(),
                                            PieceId{p.center, static_cast<std::uint8_t>(p.axis), p.half});
     if (crossings == 0) {
       // Only the center can show an island inside the piece.
-      p.fan = inside(p.center) != inside(boundary_[p.first]);
+      p.fan = is_inside(p.center_g) != is_inside(boundary_g_[p.first]);
     } else {
       p.fan = forced || crossings != 2;
     }
     if (p.fan) {
-      add_fan_triangles(p, polygons_, polygon_keys_);
+      add_fan_triangles(p, polygons_, polygon_keys_, polygon_g_);
     } else if (crossings == 2) {
       Polygon d;
       d.first = static_cast<std::uint32_t>(polygon_keys_.size());
@@ -252,6 +258,7 @@ void CellMesher::choose_modes(CellOutput& out) {
       d.feature_key = {VertexKind::FacePoint, p.center, kNoKey, static_cast<Key>(p.axis)};
       d.region = p.region;
       polygon_keys_.insert(polygon_keys_.end(), boundary_.begin() + p.first, boundary_.begin() + p.first + p.count);
+      polygon_g_.insert(polygon_g_.end(), boundary_g_.begin() + p.first, boundary_g_.begin() + p.first + p.count);
       polygons_.push_back(d);
       out.direct_pieces.push_back({p.center, static_cast<std::uint8_t>(p.axis), p.half});
     }
@@ -428,17 +435,20 @@ std::uint32_t CellMesher::vertex(CellOutput& out, const VertexKey& key, const Ve
   return static_cast<std::uint32_t>(out.vertices.size() - 1);
 }
 
-void CellMesher::trace(const std::vector<Polygon>& polygons, const std::vector<Key>& keys, CellOutput& out,
-                       std::vector<Segment>& segments) {
+void CellMesher::trace(const std::vector<Polygon>& polygons, const std::vector<Key>& keys,
+                       const std::vector<double>& values, CellOutput& out, std::vector<Segment>& segments) {
   const Frame& frame = *ctx_.frame;
   auto key_at = [&](const Polygon& p, std::uint32_t i) { return keys[p.first + i % p.count]; };
+  auto in_at = [&](const Polygon& p, std::uint32_t i) { return is_inside(values[p.first + i % p.count]); };
+  auto g_at = [&](const Polygon& p, std::uint32_t i) { return values[p.first + i % p.count]; };
   // Polygon edges with a sign change, inside end first.
   std::vector<Root> roots;
   for (const Polygon& poly : polygons)
     for (std::uint32_t j = 0; j < poly.count; ++j) {
       const Key p = key_at(poly, j), q = key_at(poly, j + 1);
-      const bool ip = inside(p), iq = inside(q);
-      if (ip != iq) roots.push_back(ip ? Root{p, q} : Root{q, p});
+      const bool ip = in_at(poly, j), iq = in_at(poly, j + 1);
+      if (ip != iq)
+        roots.push_back(ip ? Root{p, q, g_at(poly, j), g_at(poly, j + 1)} : Root{q, p, g_at(poly, j + 1), g_at(poly, j)});
     }
   std::sort(roots.begin(), roots.end());
   roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
@@ -448,8 +458,8 @@ void CellMesher::trace(const std::vector<Polygon>& polygons, const std::vector<K
   for (std::size_t i = 0; i < nr; ++i) {
     a[i] = frame.point(roots[i].in);
     b[i] = frame.point(roots[i].out);
-    ga[i] = sample(roots[i].in);
-    gb[i] = sample(roots[i].out);
+    ga[i] = roots[i].g_in;
+    gb[i] = roots[i].g_out;
   }
   find_roots(a, b, ga, gb, t, error);
   std::vector<Vec3> points(nr);
@@ -459,14 +469,19 @@ void CellMesher::trace(const std::vector<Polygon>& polygons, const std::vector<K
   std::vector<char> symbolic;
   evaluate(points, g, &f);
   const Region whole = cell_region();
-  normals(points, f, std::span(&whole, 1), normal3, nullptr, &symbolic);
+  std::vector<double> lengths;
+  normals(points, f, std::span(&whole, 1), normal3, &lengths, &symbolic);
   std::vector<std::uint32_t> root_vertex(nr);
   for (std::size_t i = 0; i < nr; ++i)
     root_vertex[i] = vertex(out, {VertexKind::EdgePoint, roots[i].in, roots[i].out, 0}, points[i], error[i]);
   normal_.assign(out.vertices.size(), Vec3{0, 0, 0});
-  for (std::size_t i = 0; i < nr; ++i) normal_[root_vertex[i]] = normal3[i];
+  grad_length_.assign(out.vertices.size(), 0.0);
+  for (std::size_t i = 0; i < nr; ++i) {
+    normal_[root_vertex[i]] = normal3[i];
+    grad_length_[root_vertex[i]] = lengths[i];
+  }
   auto root_of = [&](Key in, Key outk) {
-    return static_cast<std::uint32_t>(std::lower_bound(roots.begin(), roots.end(), Root{in, outk}) - roots.begin());
+    return static_cast<std::uint32_t>(std::lower_bound(roots.begin(), roots.end(), Root{in, outk, 0, 0}) - roots.begin());
   };
 
   // Entry (outside -> inside, walking counter-clockwise) and exit roots of each polygon.
@@ -475,7 +490,7 @@ void CellMesher::trace(const std::vector<Polygon>& polygons, const std::vector<K
     const Polygon& poly = polygons[pi];
     for (std::uint32_t j = 0; j < poly.count; ++j) {
       const Key p = key_at(poly, j), q = key_at(poly, j + 1);
-      const bool ip = inside(p), iq = inside(q);
+      const bool ip = in_at(poly, j), iq = in_at(poly, j + 1);
       if (ip == iq) continue;
       std::uint32_t& slot = crossing[pi][ip ? 1 : 0];
       if (slot != kNone) throw std::logic_error("genmod: mesh_implicit: a trace polygon has more than one segment");
@@ -561,6 +576,7 @@ void CellMesher::trace(const std::vector<Polygon>& polygons, const std::vector<K
     }
   }
   normal_.resize(out.vertices.size(), Vec3{0, 0, 0});
+  grad_length_.resize(out.vertices.size(), 0.0);
 
   segments.clear();
   for (std::size_t pi = 0; pi < polygons.size(); ++pi) {
@@ -851,13 +867,30 @@ void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, 
 }
 
 CellMesher::Accuracy CellMesher::accuracy(const CellOutput& out, std::span<const std::array<std::uint32_t, 3>> triangles) {
-  // |g| / |grad g| at the triangles' centroids and edge midpoints against the tolerance, and
-  // triangles folded against the surface's normal.
-  std::vector<Vec3> probes;
-  for (const auto& tri : triangles) {
-    Vec3 c{0, 0, 0};
-    for (std::uint32_t i : tri)
-      for (int k = 0; k < 3; ++k) c[k] += out.vertices[i].position[k] / 3.0;
+  // |g| / |grad g| at the triangles' centroids and edge midpoints against the tolerance, with
+  // |grad g| from the triangle's trace vertices; and triangles folded against their normals.
+  std::vector<Vec3>& probes = probe_points_;
+  probes.clear();
+  std::vector<double> grad(triangles.size(), 0.0);
+  Accuracy a;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const auto& tri = triangles[t];
+    Vec3 c{0, 0, 0}, n{0, 0, 0};
+    int known = 0;
+    for (std::uint32_t i : tri) {
+      for (int k = 0; k < 3; ++k) {
+        c[k] += out.vertices[i].position[k] / 3.0;
+        n[k] += i < normal_.size() ? normal_[i][k] : 0.0;
+      }
+      if (i < grad_length_.size() && grad_length_[i] > 0) {
+        grad[t] += grad_length_[i];
+        ++known;
+      }
+    }
+    grad[t] = known ? grad[t] / known : 0.0;
+    const Vec3 normal = cross(sub(out.vertices[tri[1]].position, out.vertices[tri[0]].position),
+                              sub(out.vertices[tri[2]].position, out.vertices[tri[0]].position));
+    if (dot(normal, n) < 0) a.folded = true;
     probes.push_back(c);
     for (int e = 0; e < 3; ++e) {
       const Vec3& p = out.vertices[tri[e]].position;
@@ -865,21 +898,10 @@ CellMesher::Accuracy CellMesher::accuracy(const CellOutput& out, std::span<const
       probes.push_back({0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), 0.5 * (p[2] + q[2])});
     }
   }
-  std::vector<double> gp, fp, grad;
-  std::vector<Vec3> np;
-  const Region whole = cell_region();
-  evaluate(probes, gp, &fp);
-  normals(probes, fp, std::span(&whole, 1), np, &grad);
-  Accuracy a;
-  for (std::size_t i = 0; i < probes.size(); ++i) {
-    if (!(std::fabs(gp[i]) <= ctx_.tolerance * grad[i])) a.inaccurate = true;
-    if (i % 4 == 0) {
-      const auto& tri = triangles[i / 4];
-      const Vec3 normal = cross(sub(out.vertices[tri[1]].position, out.vertices[tri[0]].position),
-                                sub(out.vertices[tri[2]].position, out.vertices[tri[0]].position));
-      if (dot(normal, np[i]) < 0) a.folded = true;
-    }
-  }
+  std::vector<double> gp;
+  evaluate(probes, gp);
+  for (std::size_t i = 0; i < probes.size(); ++i)
+    if (!(std::fabs(gp[i]) <= ctx_.tolerance * grad[i / 4])) a.inaccurate = true;
   return a;
 }
 
@@ -972,7 +994,9 @@ void CellMesher::tetrahedra(const Cell& cell, CellOutput& out) {
   const Key cc = pack(cell.corner[0] + h, cell.corner[1] + h, cell.corner[2] + h);
   std::vector<Polygon> outer, faces;
   std::vector<Key> keys;
-  for (const Piece& p : pieces_) add_fan_triangles(p, outer, keys);
+  std::vector<double> values;
+  for (const Piece& p : pieces_) add_fan_triangles(p, outer, keys, values);
+  const double gcc = sample(cc);
   for (const Polygon& t : outer) {
     faces.push_back(t);
     const Key fc = keys[t.first], b0 = keys[t.first + 1], b1 = keys[t.first + 2];
@@ -982,11 +1006,15 @@ void CellMesher::tetrahedra(const Cell& cell, CellOutput& out) {
       q.first = static_cast<std::uint32_t>(keys.size());
       q.outer = false;
       keys.insert(keys.end(), inner.begin(), inner.end());
+      for (Key k : inner) {
+        const double v = k == cc ? gcc : values[t.first + (k == fc ? 0 : k == b0 ? 1 : 2)];
+        values.push_back(v);
+      }
       faces.push_back(q);
     }
   }
   std::vector<Segment> segments;
-  trace(faces, keys, out, segments);
+  trace(faces, keys, values, out, segments);
   // Segments come in polygon order, so each tetrahedron's are consecutive.
   std::vector<std::uint32_t> polygon;
   for (std::size_t s = 0; s < segments.size();) {

@@ -94,6 +94,7 @@ class CellMesher {
   struct Piece {
     int axis;
     Key center;
+    double center_g;
     std::uint32_t half;  // half its side in lattice units
     Region region;
     std::uint32_t first, count;  // boundary points in boundary_, counter-clockwise from outside
@@ -114,7 +115,9 @@ class CellMesher {
   };
   struct Root {
     Key in, out;
-    auto operator<=>(const Root&) const = default;
+    double g_in, g_out;  // the samples at its ends
+    bool operator<(const Root& o) const { return in != o.in ? in < o.in : out < o.out; }
+    bool operator==(const Root& o) const { return in == o.in && out == o.out; }
   };
 
   void gather_pieces(const Cell& cell);
@@ -129,8 +132,8 @@ class CellMesher {
   std::vector<Side> sides_;
   std::vector<std::uint32_t> side_store_;
   void choose_modes(CellOutput& out);
-  void add_fan_triangles(const Piece& p, std::vector<Polygon>& polygons, std::vector<Key>& keys) const;
-  bool inside(Key k) const;
+  void add_fan_triangles(const Piece& p, std::vector<Polygon>& polygons, std::vector<Key>& keys,
+                         std::vector<double>& values) const;
   double sample(Key k) const;
   // g = max(f, clip) and f at points, with the cell's tape.
   void evaluate(std::span<const Vec3> points, std::vector<double>& g, std::vector<double>* f = nullptr);
@@ -144,9 +147,10 @@ class CellMesher {
   // half-widths in space.
   void find_roots(std::span<const Vec3> a, std::span<const Vec3> b, std::span<const double> ga,
                   std::span<const double> gb, std::vector<double>& t, std::vector<double>& error);
-  // Marching polygons: roots, feature points and segments of `polygons` (keys in `keys`).
-  void trace(const std::vector<Polygon>& polygons, const std::vector<Key>& keys, CellOutput& out,
-             std::vector<Segment>& segments);
+  // Marching polygons: roots, feature points and segments of `polygons` (corner keys in
+  // `keys`, their samples in `values`).
+  void trace(const std::vector<Polygon>& polygons, const std::vector<Key>& keys, const std::vector<double>& values,
+             CellOutput& out, std::vector<Segment>& segments);
   std::uint32_t vertex(CellOutput& out, const VertexKey& key, const Vec3& p, double error);
   // Moves `start` onto the surface along the gradient; false when no root is within reach.
   bool snap(const Vec3& start, Vec3& apex, double& error);
@@ -177,12 +181,16 @@ class CellMesher {
   std::vector<std::uint32_t> line_points_;
   std::vector<Piece> pieces_;
   std::vector<Key> boundary_;
+  std::vector<double> boundary_g_;  // samples at boundary_
   std::vector<Polygon> polygons_;
   std::vector<Key> polygon_keys_;
+  std::vector<double> polygon_g_;  // samples at polygon_keys_
   std::vector<Key> sample_keys_;
   std::vector<double> sample_g_;
   std::vector<std::array<std::uint32_t, 3>> loop_triangles_;
   std::vector<Vec3> normal_;  // unit normal at each output vertex of the cell (0 if none)
+  std::vector<double> grad_length_;  // |grad g| there (0 if unknown)
+  std::vector<Vec3> probe_points_;
   // Evaluation scratch.
   std::vector<double> xs_, ys_, zs_, fs_, gx_, gy_, gz_;
   struct RootScratch {
