@@ -200,6 +200,7 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
           if (dirty[c]) m.mesh(tree.cell(c), kept[slot_of[c]]);
         }
       });
+      for (std::uint32_t c : surface_cells) stats.cell_meshings += dirty[c] != 0;
       std::fill(dirty.begin(), dirty.end(), 0);
       stats.rounds = round + 1;
       std::size_t triangles = 0, wanting = 0;

@@ -134,8 +134,26 @@ void CellMesher::mesh(const Cell& cell, CellOutput& out) {
 
 void CellMesher::side_points(const Cell& cell, const Octree::Neighborhood& nb, int axis,
                              const std::array<std::uint32_t, 3>& on, std::uint32_t t0, std::uint32_t t1) {
-  // Each side is asked for by the two faces (or pieces) that share it: remember the answers.
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  // An edge of the cell itself whose three other cells around it are leaves has no points.
+  if (t1 - t0 == cell.size()) {
+    bool leaves = true;
+    const std::int64_t size = cell.size();
+    for (int quadrant = 0; quadrant < 4 && leaves; ++quadrant) {
+      int offset[3] = {0, 0, 0};
+      const std::int64_t qu = static_cast<std::int64_t>(on[u]) - (quadrant & 1 ? size : 0);
+      const std::int64_t qv = static_cast<std::int64_t>(on[v]) - (quadrant & 2 ? size : 0);
+      offset[u] = qu < cell.corner[u] ? -1 : qu >= cell.corner[u] + size ? 1 : 0;
+      offset[v] = qv < cell.corner[v] ? -1 : qv >= cell.corner[v] + size ? 1 : 0;
+      const std::uint32_t n = nb[static_cast<std::size_t>(9 * (offset[2] + 1) + 3 * (offset[1] + 1) + (offset[0] + 1))];
+      leaves = n == kNone || ctx_.octree->cell(n).kind != CellKind::Internal;
+    }
+    if (leaves) {
+      line_points_.clear();
+      return;
+    }
+  }
+  // Each side is asked for by the two faces (or pieces) that share it: remember the answers.
   const Side key{axis, on[u], on[v], t0, t1, 0, 0};
   for (const Side& sd : sides_)
     if (sd.axis == key.axis && sd.a == key.a && sd.b == key.b && sd.t0 == t0 && sd.t1 == t1) {

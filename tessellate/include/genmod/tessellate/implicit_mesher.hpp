@@ -101,6 +101,7 @@ struct ImplicitMeshStats {
   std::size_t splits_for_loops = 0, splits_for_accuracy = 0, splits_for_folds = 0;
   std::size_t feature_points = 0;        // face feature points
   int rounds = 0;                        // meshing rounds done
+  std::size_t cell_meshings = 0;         // cells meshed, over all rounds
   double max_vertex_error = 0.0;         // largest certified vertex distance bound
   std::size_t uncertified_vertices = 0;  // vertices without a sign-change bracket within tolerance
   double mean_tape_length = 0.0;         // of the pruned tapes of surface cells
