@@ -36,9 +36,16 @@ const Fn& checked_implicit(const Fn& f) {
 
 }  // namespace
 
+Fn hessian_of(const Fn& f) {
+  const Fn fx = derivative(f, 0), fy = derivative(f, 1), fz = derivative(f, 2);
+  return cat({derivative(fx, 0), derivative(fx, 1), derivative(fx, 2), derivative(fy, 1), derivative(fy, 2),
+              derivative(fz, 2)});
+}
+
 ImplicitSurface::ImplicitSurface(const Fn& f)
     : value_(checked_implicit(f), kXyz),
-      gradient_(cat({derivative(f, 0), derivative(f, 1), derivative(f, 2)}), kXyz) {}
+      gradient_(cat({derivative(f, 0), derivative(f, 1), derivative(f, 2)}), kXyz),
+      hessian_(hessian_of(f), kXyz) {}
 
 namespace {
 
@@ -155,7 +162,7 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
   ImplicitMesh result;
   ImplicitMeshStats& stats = result.stats;
   stats.full_tape_length = surface.value().size();
-  const implicit::ClassifyContext classify{&frame, &settings, min_level, max_cell_level};
+  const implicit::ClassifyContext classify{&frame, &settings, &surface.hessian(), min_level, max_cell_level};
   raster_detail::run_with_threads(settings.threads, "mesh_implicit", [&] {
     Octree tree(surface, classify, deadline, stats);
     stats.seconds_octree = seconds_since(start);

@@ -44,19 +44,32 @@ Result distance_at(const Tape& tape, Evaluators& ev, const std::array<double, 3>
   r.estimate = std::fabs(f) / gn;
   const double s = f > 0 ? -1.0 / gn : 1.0 / gn;
   const double dir[3] = {s * g[0], s * g[1], s * g[2]};
-  // Steps slightly past the first-order estimate, then growing geometrically.
+  // Steps slightly past the first-order estimate, then growing geometrically; once the sign
+  // changes, bisection between the last two steps tightens the bound.
   static constexpr double kFactors[] = {1.0 + 1e-9, 1.0 + 1e-6, 1.001, 1.01, 1.1, 1.5, 2.0, 3.0, 5.0, 8.0, 13.0};
-  for (double factor : kFactors) {
-    const double t = r.estimate * factor;
-    if (t > search_radius && factor > 1.1) break;
+  auto flips = [&](double t) {
     const double q[3] = {p[0] + t * dir[0], p[1] + t * dir[1], p[2] + t * dir[2]};
     const double fq = ev.point.eval(tape, q)[0];
-    if (fq == 0.0 || (fq > 0) != (f > 0)) {
-      // |q - p| as evaluated (dir is a unit vector up to rounding).
-      const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
-      r.bound = std::sqrt(dx * dx + dy * dy + dz * dz);
-      return r;
+    return fq == 0.0 || (fq > 0) != (f > 0);
+  };
+  double same = 0.0;  // a step with f's sign (0: the point itself)
+  for (double factor : kFactors) {
+    double t = r.estimate * factor;
+    if (t > search_radius && factor > 1.1) break;
+    if (!flips(t)) {
+      same = t;
+      continue;
     }
+    for (int i = 0; i < 12 && t - same > 1e-3 * t; ++i) {
+      const double mid = 0.5 * (same + t);
+      if (flips(mid)) t = mid;
+      else same = mid;
+    }
+    // |q - p| as evaluated (dir is a unit vector up to rounding).
+    const double q[3] = {p[0] + t * dir[0], p[1] + t * dir[1], p[2] + t * dir[2]};
+    const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+    r.bound = std::sqrt(dx * dx + dy * dy + dz * dz);
+    return r;
   }
   return r;
 }

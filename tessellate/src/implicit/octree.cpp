@@ -54,6 +54,8 @@ Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext&
   if (s.lo() > 0.0) return d;  // outside the box
   Interval f = w.intervals.eval(parent.value, box)[0];
   const std::uint8_t err = w.intervals.errors()[0];
+  // Mean value forms need continuity (no comparison, select or floor that can jump here).
+  const bool f_continuous = w.intervals.continuous();
   ++w.evaluations;
   // Points where f is an error count as outside, as in render_sign.
   if (err == kCertainError) return d;
@@ -67,6 +69,7 @@ Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext&
   // g = max(f, clip): f is the maximum somewhere iff f.hi >= clip.lo.
   const bool f_active = f.hi() >= s.lo();
   std::array<Interval, 3> g = {Interval::empty(), Interval::empty(), Interval::empty()};
+  bool gradient_continuous = false;
   if (f_active) {
     const auto gf = w.intervals.eval(parent.gradient, box);
     bool gerr = false;
@@ -74,7 +77,8 @@ Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext&
     tapes.gradient = parent.gradient.simplify(w.intervals.choices());
     for (int k = 0; k < 3; ++k) g[k] = gerr ? Interval::entire() : gf[static_cast<std::size_t>(k)];
     d.bounded_gradient = !gerr;
-    if (!gerr && err == kNoError) {
+    gradient_continuous = w.intervals.continuous();
+    if (!gerr && err == kNoError && f_continuous) {
       // The mean value form f(m) + grad f(X) (X - m) is second order in the cell's size: it
       // removes most cells the natural extension only guesses may hold surface.
       std::array<Interval, 3> center;
@@ -92,7 +96,14 @@ Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext&
   }
   d.kind = CellKind::Surface;
   d.tapes = std::move(tapes);
-  const bool clip_active = s.hi() >= f.lo();
+  // f's gradients matter only where f can be the zero of g.
+  if (f.hi() < 0.0) {
+    g = {Interval::empty(), Interval::empty(), Interval::empty()};
+    d.bounded_gradient = true;
+  }
+  // The clip's gradients matter only where the clip can be the zero of g: where it reaches
+  // 0 and is the maximum.
+  const bool clip_active = s.hi() >= f.lo() && s.hi() >= 0.0;
   if (clip_active)
     for (int a = 0; a < 3; ++a) {
       if (active[a] == 0) continue;
@@ -103,6 +114,27 @@ Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext&
       }
     }
   d.certified = d.bounded_gradient && normals_in_a_cone(g);
+  if (!d.certified && d.bounded_gradient && gradient_continuous && f_active && f.hi() >= 0.0 && !clip_active) {
+    // The gradient's mean value form grad f(m) + H(X) (X - m) is tighter on small cells
+    // (where the gradient is continuous: a min or max of two active parts jumps).
+    std::array<Interval, 3> center;
+    for (int k = 0; k < 3; ++k) center[k] = Interval(box[k].mid());
+    const auto gm_span = w.intervals.eval(d.tapes->gradient, center);
+    bool ok = true;
+    for (std::uint8_t e : w.intervals.errors()) ok = ok && e == kNoError;
+    const std::array<Interval, 3> gm{gm_span[0], gm_span[1], gm_span[2]};
+    if (ok) {
+      const auto h = w.intervals.eval(*ctx.hessian, box);
+      for (std::uint8_t e : w.intervals.errors()) ok = ok && e == kNoError;
+      ok = ok && w.intervals.continuous();
+      if (ok) {
+        // Symmetric: xx xy xz yy yz zz.
+        const std::array<std::array<Interval, 3>, 3> hm{{{h[0], h[1], h[2]}, {h[1], h[3], h[4]}, {h[2], h[4], h[5]}}};
+        for (int k = 0; k < 3; ++k) g[k] = intersect(g[k], mean_value_form(gm[k], hm[k], box, center));
+        d.certified = normals_in_a_cone(g);
+      }
+    }
+  }
   // A wide normal cone means detail (curvature, a crease, a small part): split down to
   // min_feature. Without gradient bounds (a formula whose derivative fails, like the 0/0 of
   // |max(q, 0)| in an exact box distance) the meshing checks decide instead.

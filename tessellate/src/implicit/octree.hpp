@@ -39,6 +39,7 @@ struct CellTapes {
 struct ClassifyContext {
   const Frame* frame;
   const ImplicitMeshSettings* settings;
+  const Tape* hessian;  // tightens the gradient's enclosure when the cone test fails
   int min_level;  // cells of this level or finer are at min_feature
   int max_cell_level;  // cells coarser than this that contain surface are split
 };

@@ -41,8 +41,9 @@
 namespace genmod {
 
 // A scalar implicit function of (x, y, z) = (x(0), x(1), x(2)) compiled for meshing: its tape
-// and the tape of its symbolic gradient (interval bounds of the gradient decide adaptivity and
-// certify topology). Immutable; share one between threads and meshing runs.
+// and the tapes of its symbolic gradient and Hessian (interval bounds of the gradient decide
+// adaptivity and certify topology; the Hessian tightens them). Immutable; share one between
+// threads and meshing runs.
 class ImplicitSurface {
  public:
   // Throws std::invalid_argument if f is not scalar or depends on coordinates other than
@@ -50,9 +51,11 @@ class ImplicitSurface {
   explicit ImplicitSurface(const Fn& f);
   const Tape& value() const noexcept { return value_; }
   const Tape& gradient() const noexcept { return gradient_; }  // three outputs
+  // The six second derivatives xx, xy, xz, yy, yz, zz: the gradient's mean value form.
+  const Tape& hessian() const noexcept { return hessian_; }
 
  private:
-  Tape value_, gradient_;
+  Tape value_, gradient_, hessian_;
 };
 
 using Box3 = std::array<Interval, 3>;
