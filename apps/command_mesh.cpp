@@ -93,7 +93,8 @@ const Command kMeshCommand{
     "  --min-feature H  smallest cell edge (required for .vm files)\n"
     "  --tolerance E    largest vertex distance from the surface (default H)\n"
     "  --max-cell C     largest cell holding surface (default box / 8)\n"
-    "  --max-cells N, --max-seconds S  limits (reported when reached)\n"
+    "  --max-cells N, --max-memory MB, --max-seconds S  limits (reported when reached; memory counts\n"
+    "                 the octree and its pruned tapes, default 8192 MB)\n"
     "  --threads N      worker threads (default: all cores)\n"
     "  --no-sharp       no feature points (smooth placement only)\n"
     "  --no-check       skip the validity report (exit status 1 when the mesh is not valid)\n",

@@ -36,9 +36,9 @@ int run_mesh_implicit(std::span<const std::string> args) {
     }
   }
   static constexpr std::array<const char*, 2> kFlags{"--no-sharp", "--no-check"};
-  static constexpr std::array<const char*, 9> kValued{"--box",       "--min-feature", "--tolerance",
-                                                      "--max-cell",  "--max-seconds", "--threads",
-                                                      "-o",          "--output",      "--max-cells"};
+  static constexpr std::array<const char*, 10> kValued{"--box",       "--min-feature", "--tolerance",  "--max-cell",
+                                                       "--max-seconds", "--threads",   "-o",           "--output",
+                                                       "--max-cells",   "--max-memory"};
   const Arguments a(rest, kFlags, kValued);
   if (a.positional().size() != 1)
     throw UsageError("expected one model, got " + std::to_string(a.positional().size()) + " arguments");
@@ -54,6 +54,8 @@ int run_mesh_implicit(std::span<const std::string> args) {
   s.max_cell = positive_option(a, {"--max-cell"}, 0, true);
   s.max_seconds = positive_option(a, {"--max-seconds"}, 0, true);
   s.max_cells = static_cast<std::size_t>(positive_option(a, {"--max-cells"}, static_cast<double>(s.max_cells), false));
+  s.max_memory = static_cast<std::size_t>(
+      positive_option(a, {"--max-memory"}, static_cast<double>(s.max_memory >> 20), false) * (1 << 20));
   s.threads = a.int_value({"--threads"}, 0, 0, 1024);
   s.sharp_features = !a.has("--no-sharp");
   const std::optional<std::string> box_text = a.value({"--box"});

@@ -79,6 +79,7 @@ void check_settings(const Box3& box, const ImplicitMeshSettings& s) {
   if (s.max_rounds < 0) throw std::invalid_argument("genmod: mesh_implicit: max_rounds must be >= 0");
   if (!nonnegative(s.max_seconds)) throw std::invalid_argument("genmod: mesh_implicit: max_seconds must be >= 0");
   if (s.max_cells < 1) throw std::invalid_argument("genmod: mesh_implicit: max_cells must be >= 1");
+  if (s.max_memory < 1) throw std::invalid_argument("genmod: mesh_implicit: max_memory must be >= 1");
 }
 
 void add_limit(ImplicitMeshStats& stats, const char* name) {
@@ -226,7 +227,7 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
         add_limit(stats, "seconds");
         may_split = false;
       } else if (may_split && tree.cell_limit_reached()) {
-        add_limit(stats, "cells");
+        add_limit(stats, tree.memory_bytes() > settings.max_memory ? "memory" : "cells");
         may_split = false;
       }
       std::vector<std::uint32_t> split;

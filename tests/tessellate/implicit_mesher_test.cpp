@@ -254,6 +254,13 @@ TEST(ImplicitMesher, LimitsAreReported) {
   EXPECT_EQ(m.stats.limits_hit[0], "cells");
   const MeshValidity v = validate(m.mesh);
   EXPECT_TRUE(v.valid()) << describe(v);  // coarser, still a valid mesh
+  // The memory limit (bytes of cells and pruned tapes) stops refinement the same way.
+  const ImplicitMesh small = mesh_implicit(f, cube_box(2.5), {.min_feature = 0.01, .max_memory = 1 << 20});
+  ASSERT_FALSE(small.stats.limits_hit.empty());
+  EXPECT_EQ(small.stats.limits_hit[0], "memory");
+  const MeshValidity w = validate(small.mesh);
+  EXPECT_TRUE(w.valid()) << describe(w);
+  EXPECT_LT(small.mesh.triangles.size(), mesh_implicit(f, cube_box(2.5), {.min_feature = 0.025}).mesh.triangles.size());
 }
 
 TEST(ImplicitMesher, RejectsBadInput) {

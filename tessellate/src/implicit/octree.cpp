@@ -176,11 +176,7 @@ std::vector<Octree::Pending> Octree::classify_all(std::vector<Pending>& pending,
     Decision& d = decisions[i];
     const std::uint32_t index = pending[i].cell;
     bool split = d.kind == CellKind::Surface && d.split && allow_split;
-    if (split && cells_.size() + 8 > context_.settings->max_cells) {
-      split = false;
-      if (std::find(stats.limits_hit.begin(), stats.limits_hit.end(), "cells") == stats.limits_hit.end())
-        stats.limits_hit.emplace_back("cells");
-    }
+    if (split && !room_for_children(stats)) split = false;
     if (split) {
       const Cell parent = cells_[index];
       const std::uint32_t half = parent.size() / 2;
@@ -202,20 +198,26 @@ std::vector<Octree::Pending> Octree::classify_all(std::vector<Pending>& pending,
     c.bounded_gradient = d.bounded_gradient;
     if (d.kind == CellKind::Surface) {
       c.tapes = static_cast<std::uint32_t>(tapes_.size());
+      tape_bytes_ += d.tapes->value.clauses().size_bytes() + d.tapes->gradient.clauses().size_bytes();
       tapes_.push_back(std::move(*d.tapes));
     }
   }
   return next;
 }
 
+bool Octree::room_for_children(ImplicitMeshStats& stats) const {
+  const char* limit = cells_.size() + 8 > context_.settings->max_cells ? "cells"
+                      : memory_bytes() > context_.settings->max_memory ? "memory"
+                                                                        : nullptr;
+  if (limit && std::find(stats.limits_hit.begin(), stats.limits_hit.end(), limit) == stats.limits_hit.end())
+    stats.limits_hit.emplace_back(limit);
+  return limit == nullptr;
+}
+
 void Octree::split(const std::vector<std::uint32_t>& surface_cells, ImplicitMeshStats& stats) {
   std::vector<Pending> children;
   for (std::uint32_t index : surface_cells) {
-    if (cells_.size() + 8 > context_.settings->max_cells) {
-      if (std::find(stats.limits_hit.begin(), stats.limits_hit.end(), "cells") == stats.limits_hit.end())
-        stats.limits_hit.emplace_back("cells");
-      break;
-    }
+    if (!room_for_children(stats)) break;
     const Cell parent = cells_[index];
     const CellTapes tapes = tapes_[parent.tapes];
     const std::uint32_t half = parent.size() / 2;

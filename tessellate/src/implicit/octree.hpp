@@ -62,7 +62,13 @@ class Octree {
 
   // Splits surface cells (whose level is above min_level) into 8 classified children.
   void split(const std::vector<std::uint32_t>& surface_cells, ImplicitMeshStats& stats);
-  bool cell_limit_reached() const noexcept { return cells_.size() >= context_.settings->max_cells; }
+  bool cell_limit_reached() const noexcept {
+    return cells_.size() >= context_.settings->max_cells || memory_bytes() > context_.settings->max_memory;
+  }
+  // The bytes held by the cells and their pruned tapes (the clause arrays).
+  std::size_t memory_bytes() const noexcept {
+    return cells_.size() * sizeof(Cell) + tapes_.size() * sizeof(CellTapes) + tape_bytes_;
+  }
 
   // The 27 nodes around a leaf c: entry 9 (dz + 1) + 3 (dy + 1) + (dx + 1) is the node of
   // c's level (or the leaf above it) at c's corner + (dx, dy, dz) * size, kNone outside the
@@ -95,8 +101,12 @@ class Octree {
   // Classifies `pending` (in parallel); returns the children to classify next.
   std::vector<Pending> classify_all(std::vector<Pending>& pending, bool allow_split, ImplicitMeshStats& stats);
 
+  // False (and the limit recorded) when 8 more cells would pass max_cells or max_memory.
+  bool room_for_children(ImplicitMeshStats& stats) const;
+
   std::vector<Cell> cells_;
   std::vector<CellTapes> tapes_;
+  std::size_t tape_bytes_ = 0;
   ClassifyContext context_;
 };
 

@@ -29,8 +29,8 @@
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/interval.hpp"
 #include "genmod/kernel/tape.hpp"
-#include "genmod/tessellate/mesh.hpp"
 #include "genmod/tessellate/box3.hpp"
+#include "genmod/tessellate/mesh.hpp"
 
 #include <array>
 #include <cstddef>
@@ -76,8 +76,10 @@ struct ImplicitMeshSettings {
   // Rounds of re-splitting cells that fail the accuracy or single-loop checks.
   int max_rounds = 16;
   // Limits, each reported in ImplicitMeshStats::limits_hit when reached (the mesh stays
-  // closed, manifold and intersection-free, only coarser): octree cells, triangles, seconds.
+  // closed, manifold and intersection-free, only coarser): octree cells, bytes held by the
+  // octree and its pruned per-cell tapes, triangles, seconds.
   std::size_t max_cells = 50'000'000;
+  std::size_t max_memory = std::size_t{8} << 30;
   std::size_t max_triangles = 100'000'000;
   double max_seconds = 0.0;  // 0 = no time limit
   int threads = 0;           // 0 = all cores
@@ -108,7 +110,7 @@ struct ImplicitMeshStats {
   std::size_t uncertified_vertices = 0;  // vertices without a sign-change bracket within tolerance
   double mean_tape_length = 0.0;         // of the pruned tapes of surface cells
   std::size_t full_tape_length = 0;
-  std::vector<std::string> limits_hit;   // "cells", "triangles", "seconds", "rounds"
+  std::vector<std::string> limits_hit;   // "cells", "memory", "triangles", "seconds", "rounds"
   double seconds_octree = 0.0, seconds_mesh = 0.0, seconds_assemble = 0.0;
 };
 
