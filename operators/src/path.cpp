@@ -157,9 +157,10 @@ void Path::arc_to_line(const Fn& center, const Fn& radius, const Fn& p1, const F
 void Path::close() {
   require_open("Path::close");
   if (pieces_.empty()) detail::dimension_error("Path::close", "the path has no pieces");
-  if (last_line_ && first_line_ && last_line_->from == first_line_->from && last_line_->to == first_line_->to) {
+  if (last_line_ && first_line_ && identical(last_line_->from, first_line_->from) &&
+      identical(last_line_->to, first_line_->to)) {
     pieces_.front() = segment(*current_, first_end_);
-  } else if (!(*current_ == *start_)) {
+  } else if (!identical(*current_, *start_)) {
     pieces_.push_back(segment(*current_, *start_));
   }
   closed_ = true;

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
 
 namespace genmod {
 namespace {
@@ -28,6 +29,30 @@ TEST(Fn, HashConsingSharesEqualSubexpressions) {
   const std::size_t before = dag::size();
   for (int i = 0; i < 100; ++i) (void)(sin(x(0) * x(1)) + 2.0);
   EXPECT_EQ(dag::size(), before);
+}
+
+// == and != on Fn build the relation (as < does), never a C++ bool turned into a constant;
+// a bool does not convert to Fn at all; identical() compares handles.
+static_assert(std::is_same_v<decltype(x(0) == 0.5), Fn>);
+static_assert(std::is_same_v<decltype(0.5 != x(0)), Fn>);
+static_assert(!std::is_constructible_v<Fn, bool>);
+static_assert(std::is_convertible_v<int, Fn> && std::is_convertible_v<double, Fn>);
+
+TEST(Fn, EqualityBuildsTheRelation) {
+  const Fn on = x(0) == 0.5;
+  EXPECT_EQ(at(on, {0.5}), 1.0);
+  EXPECT_EQ(at(on, {0.25}), 0.0);
+  EXPECT_EQ(at(x(0) != 0.5, {0.25}), 1.0);
+  EXPECT_EQ(at(cat({x(0), x(1)}) == cat({1.0, 2.0}), {1.0, 2.0}), 1.0);
+  EXPECT_EQ(at(cat({x(0), x(1)}) == cat({1.0, 2.0}), {1.0, 3.0}), 0.0);
+  // Over a box holding 0.5 the relation may hold; over one that does not, it cannot.
+  EXPECT_EQ(range(on, {Interval(0, 1)}), Interval(0, 1));
+  EXPECT_EQ(range(on, {Interval(0.6, 1)}), Interval(0, 0));
+  EXPECT_TRUE(identical(sin(x(0)), sin(x(0))));
+  EXPECT_FALSE(identical(sin(x(0)), cos(x(0))));
+  const Fn three = 3;  // integers convert like doubles
+  double v = 0;
+  EXPECT_TRUE(three.is_constant(&v) && v == 3.0);
 }
 
 TEST(Fn, ConstructionSimplifies) {

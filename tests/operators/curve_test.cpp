@@ -174,7 +174,7 @@ TEST(Curve, DerivativeOperatorIsSharedAcrossThreads) {
     });
   for (auto& th : threads) th.join();
   for (std::size_t i = 1; i < 4; ++i) {
-    EXPECT_TRUE(results[i] == results[0]);
+    EXPECT_TRUE(identical(results[i], results[0]));
     EXPECT_EQ(values[i], values[0]);
   }
 }

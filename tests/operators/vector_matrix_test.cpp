@@ -47,11 +47,11 @@ TEST(Matrix, ShapeRowsColumnsAndTranspose) {
   EXPECT_EQ(m.cols(), 3);
   EXPECT_EQ(m[1].dim(), 3u);
   EXPECT_EQ(at(m[1], {}, 2), 3.0);
-  EXPECT_TRUE(m(0, 1) == v);
+  EXPECT_TRUE(identical(m(0, 1), v));
   const Matrix t = transpose(m);
   EXPECT_EQ(t.rows(), 3);
-  EXPECT_TRUE(t(1, 0) == v);
-  EXPECT_TRUE(m.column(2) == cat({w, 3.0}));
+  EXPECT_TRUE(identical(t(1, 0), v));
+  EXPECT_TRUE(identical(m.column(2), cat({w, 3.0})));
   EXPECT_THROW(matrix(cat({u, v, w}), 2, 2), std::invalid_argument);
   EXPECT_THROW(m(2, 0), std::out_of_range);
   EXPECT_THROW(m * m, std::invalid_argument);

@@ -13,6 +13,7 @@
 
 #include "genmod/kernel/dag.hpp"
 
+#include <concepts>
 #include <cstdint>
 #include <initializer_list>
 #include <span>
@@ -26,6 +27,13 @@ class Fn {
   Fn();
   // A constant scalar.
   Fn(double value);  // NOLINT(google-explicit-constructor): numbers convert, as in GENMOD
+  // Integers convert like doubles.
+  template <std::integral I>
+    requires(!std::same_as<I, bool>)
+  Fn(I value) : Fn(static_cast<double>(value)) {}  // NOLINT(google-explicit-constructor)
+  // A bool never becomes a function: `Fn c = (f == g)` with a C++ comparison in it is a
+  // mistake, caught at compile time.
+  Fn(bool) = delete;
   // A function with the given component nodes (at least one).
   explicit Fn(std::vector<NodeId> components);
   // The scalar function of one DAG node.
@@ -44,7 +52,9 @@ class Fn {
   // Projection onto component j (0-based).
   Fn operator[](std::size_t j) const;
 
-  friend bool operator==(const Fn& a, const Fn& b) noexcept { return a.nodes_ == b.nodes_; }
+  // True when both handles hold the same nodes (hash-consing makes structurally equal
+  // functions identical). Not operator==, which builds the relation.
+  friend bool identical(const Fn& a, const Fn& b) noexcept { return a.nodes_ == b.nodes_; }
 
  private:
   std::vector<NodeId> nodes_;
@@ -72,8 +82,12 @@ Fn operator<(const Fn& a, const Fn& b);
 Fn operator<=(const Fn& a, const Fn& b);
 Fn operator>(const Fn& a, const Fn& b);
 Fn operator>=(const Fn& a, const Fn& b);
-Fn eq(const Fn& a, const Fn& b);  // GENMOD's ==; operator== compares Fn identity
-Fn ne(const Fn& a, const Fn& b);  // 1 if any component differs
+// == and != build relations like < does, so `solve(x(0) == 0.5, ...)` is the constraint it
+// reads as; identical() compares handles.
+Fn eq(const Fn& a, const Fn& b);  // 1 where all components are equal
+Fn ne(const Fn& a, const Fn& b);  // 1 where any component differs
+inline Fn operator==(const Fn& a, const Fn& b) { return eq(a, b); }
+inline Fn operator!=(const Fn& a, const Fn& b) { return ne(a, b); }
 // Logical operators on scalars: nonzero is true; results are 0/1.
 Fn operator&&(const Fn& a, const Fn& b);
 Fn operator||(const Fn& a, const Fn& b);

@@ -129,7 +129,7 @@ struct SolveResult {
   std::size_t unique_components() const noexcept;
 };
 
-// Solves `constraint` (a 0/1-valued scalar Fn built with eq/ne/< <= > >= && || !) for the
+// Solves `constraint` (a 0/1-valued scalar Fn built with == != < <= > >= && || !) for the
 // coordinates `unknowns` over `box` (one side per unknown). Throws std::invalid_argument
 // naming the problem for: a box of the wrong dimension or with an empty, NaN or unbounded
 // side; epsilon or delta not > 0 (or NaN); threads < 0; batch == 0; a constraint that is not
