@@ -1,6 +1,7 @@
 // genmod check MESH: the validity report of a mesh file, as it is written (no welding).
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "file_arguments.hpp"
 
 #include "genmod/tessellate/mesh_io.hpp"
 #include "genmod/tessellate/validate.hpp"
@@ -16,11 +17,7 @@ int run_check(std::span<const std::string> args) {
   static constexpr std::array<const char*, 0> kFlags{};
   static constexpr std::array<const char*, 1> kValued{"--threads"};
   const Arguments a(args, kFlags, kValued);
-  if (a.positional().size() != 1)
-    throw UsageError(a.positional().empty() ? "missing mesh file"
-                                            : "expected one mesh file, got " + std::to_string(a.positional().size()));
-  const std::string& input = a.positional()[0];
-  if (!mesh_format(input)) throw UsageError("input '" + input + "': unknown mesh extension (use .obj, .ply, .stl or .off)");
+  const std::string& input = mesh_file_argument(a);
   const int threads = a.int_value({"--threads"}, 0, 0, 1024);
   const Mesh mesh = read_mesh(input);
   const MeshValidity v = validate(mesh, {.threads = threads});

@@ -1,7 +1,7 @@
 // genmod mesh NAME [--param k=v ...] [--res N] -o FILE: a gallery model as a triangle mesh.
 #include "arguments.hpp"
 #include "commands.hpp"
-#include "output_path.hpp"
+#include "file_arguments.hpp"
 
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"

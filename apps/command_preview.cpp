@@ -1,7 +1,7 @@
 // genmod preview MESH -o out.png [--size N]: a shaded picture of any mesh file.
 #include "arguments.hpp"
 #include "commands.hpp"
-#include "output_path.hpp"
+#include "file_arguments.hpp"
 
 #include "genmod/tessellate/mesh_io.hpp"
 #include "genmod/tessellate/png_io.hpp"
@@ -19,11 +19,7 @@ int run_preview(std::span<const std::string> args) {
   static constexpr std::array<const char*, 0> kFlags{};
   static constexpr std::array<const char*, 3> kValued{"--size", "-o", "--output"};
   const Arguments a(args, kFlags, kValued);
-  if (a.positional().size() != 1)
-    throw UsageError(a.positional().empty() ? "missing mesh file"
-                                            : "expected one mesh file, got " + std::to_string(a.positional().size()));
-  const std::string& input = a.positional()[0];
-  if (!mesh_format(input)) throw UsageError("input '" + input + "': unknown mesh extension (use .obj, .ply, .stl or .off)");
+  const std::string& input = mesh_file_argument(a);
   const std::optional<std::string> output = a.value({"-o", "--output"});
   if (!output) throw UsageError("missing output file (-o FILE.png)");
   const int size = a.int_value({"--size"}, 512, 1, 8192);

@@ -75,6 +75,22 @@ void OutputFile::write_uint(std::uint64_t v) {
   write(std::string_view(text, static_cast<std::size_t>(r.ptr - text)));
 }
 
+void OutputFile::write_point(const std::array<double, 3>& p) {
+  write_double(p[0]);
+  write(" ");
+  write_double(p[1]);
+  write(" ");
+  write_double(p[2]);
+}
+
+void OutputFile::write_indices(const std::array<std::uint32_t, 3>& t, std::uint64_t offset) {
+  write_uint(t[0] + offset);
+  write(" ");
+  write_uint(t[1] + offset);
+  write(" ");
+  write_uint(t[2] + offset);
+}
+
 void OutputFile::finish() {
   flush_buffer();
   errno = 0;

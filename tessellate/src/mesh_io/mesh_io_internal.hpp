@@ -4,6 +4,7 @@
 
 #include "genmod/tessellate/mesh_io.hpp"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -26,6 +27,9 @@ class OutputFile {
   void write(std::string_view bytes);
   void write_double(double v);  // shortest text that reads back as v
   void write_uint(std::uint64_t v);
+  // "x y z" / "a b c" (each index plus `offset`), without an end of line.
+  void write_point(const std::array<double, 3>& p);
+  void write_indices(const std::array<std::uint32_t, 3>& t, std::uint64_t offset = 0);
   // Flushes and closes; throws MeshFileError if the data did not all reach the file.
   void finish();
 

@@ -36,20 +36,12 @@ void write_obj(const Mesh& mesh, OutputFile& out) {
   out.write(" triangles\n");
   for (const auto& p : mesh.vertices) {
     out.write("v ");
-    out.write_double(p[0]);
-    out.write(" ");
-    out.write_double(p[1]);
-    out.write(" ");
-    out.write_double(p[2]);
+    out.write_point(p);
     out.write("\n");
   }
   for (const auto& t : mesh.triangles) {
     out.write("f ");
-    out.write_uint(std::uint64_t{t[0]} + 1);
-    out.write(" ");
-    out.write_uint(std::uint64_t{t[1]} + 1);
-    out.write(" ");
-    out.write_uint(std::uint64_t{t[2]} + 1);
+    out.write_indices(t, 1);
     out.write("\n");
   }
 }

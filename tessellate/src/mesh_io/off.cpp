@@ -25,20 +25,12 @@ void write_off(const Mesh& mesh, OutputFile& out) {
   out.write_uint(mesh.triangles.size());
   out.write(" 0\n");
   for (const auto& p : mesh.vertices) {
-    out.write_double(p[0]);
-    out.write(" ");
-    out.write_double(p[1]);
-    out.write(" ");
-    out.write_double(p[2]);
+    out.write_point(p);
     out.write("\n");
   }
   for (const auto& t : mesh.triangles) {
     out.write("3 ");
-    out.write_uint(t[0]);
-    out.write(" ");
-    out.write_uint(t[1]);
-    out.write(" ");
-    out.write_uint(t[2]);
+    out.write_indices(t);
     out.write("\n");
   }
 }

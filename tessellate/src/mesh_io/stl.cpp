@@ -131,21 +131,12 @@ void write_stl(const Mesh& mesh, OutputFile& out) {
     const auto& a = mesh.vertices[t[0]];
     const auto& b = mesh.vertices[t[1]];
     const auto& c = mesh.vertices[t[2]];
-    const std::array<double, 3> n = unit_normal(a, b, c);
     out.write("facet normal ");
-    out.write_double(n[0]);
-    out.write(" ");
-    out.write_double(n[1]);
-    out.write(" ");
-    out.write_double(n[2]);
+    out.write_point(unit_normal(a, b, c));
     out.write("\n outer loop\n");
     for (const auto* p : {&a, &b, &c}) {
       out.write("  vertex ");
-      out.write_double((*p)[0]);
-      out.write(" ");
-      out.write_double((*p)[1]);
-      out.write(" ");
-      out.write_double((*p)[2]);
+      out.write_point(*p);
       out.write("\n");
     }
     out.write(" endloop\nendfacet\n");
