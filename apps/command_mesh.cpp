@@ -1,7 +1,7 @@
 // genmod mesh NAME [--param k=v ...] [--res N] -o FILE: a gallery model as a triangle mesh.
 #include "arguments.hpp"
 #include "commands.hpp"
-#include "file_arguments.hpp"
+#include "option_values.hpp"
 
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
@@ -62,7 +62,7 @@ int run_mesh(std::span<const std::string> args) {
   const int res = a.int_value({"--res"}, 64, 3, 4096);
   if (!mesh_format(*output))
     throw UsageError("output '" + *output + "': unknown mesh extension (use .obj, .ply, .stl or .off)");
-  check_output_writable(*output);
+  check_writable(*output);
 
   const models::Model* model = nullptr;
   Fn surface;

@@ -2,76 +2,21 @@
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "model_file.hpp"
+#include "option_values.hpp"
+#include "progress_bar.hpp"
 
 #include "genmod/models/implicit_gallery.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/mesh.hpp"
 #include "genmod/tessellate/validate.hpp"
 
-#include <unistd.h>
-
 #include <array>
-#include <cerrno>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
 #include <string>
 #include <vector>
 
 namespace genmod::app {
-namespace {
-
-double parse_number(const std::string& option, const std::string& text) {
-  char* end = nullptr;
-  errno = 0;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
-    throw UsageError(option + ": '" + text + "' is not a finite number");
-  return v;
-}
-
-double positive_option(const Arguments& a, std::initializer_list<std::string_view> names, double fallback,
-                       bool zero_allowed) {
-  const std::optional<std::string> text = a.value(names);
-  if (!text) return fallback;
-  const std::string name(*names.begin());
-  const double v = parse_number(name, *text);
-  if (v < 0 || (v == 0 && !zero_allowed))
-    throw UsageError(name + " must be " + (zero_allowed ? ">= 0" : "> 0") + ", got " + *text);
-  return v;
-}
-
-// "x0,y0,z0,x1,y1,z1".
-Box3 parse_box(const std::string& text) {
-  std::vector<double> v;
-  std::size_t begin = 0;
-  while (begin <= text.size()) {
-    const std::size_t end = std::min(text.find(',', begin), text.size());
-    v.push_back(parse_number("--box", text.substr(begin, end - begin)));
-    begin = end + 1;
-  }
-  if (v.size() != 6) throw UsageError("--box expects x0,y0,z0,x1,y1,z1 (6 numbers), got '" + text + "'");
-  Box3 box;
-  for (int k = 0; k < 3; ++k) {
-    if (!(v[static_cast<std::size_t>(k)] < v[static_cast<std::size_t>(k + 3)]))
-      throw UsageError("--box: the low corner must be below the high corner on every axis, got '" + text + "'");
-    box[static_cast<std::size_t>(k)] = Interval(v[static_cast<std::size_t>(k)], v[static_cast<std::size_t>(k + 3)]);
-  }
-  return box;
-}
-
-// The output's directory must exist and be writable before minutes of meshing start.
-void check_writable(const std::string& output) {
-  const std::filesystem::path dir = std::filesystem::absolute(output).parent_path();
-  if (!std::filesystem::is_directory(dir)) throw UsageError("output '" + output + "': no such directory " + dir.string());
-  if (::access(dir.c_str(), W_OK) != 0) throw UsageError("output '" + output + "': directory is not writable");
-  if (std::filesystem::exists(output) && ::access(output.c_str(), W_OK) != 0)
-    throw UsageError("output '" + output + "': file is not writable");
-}
-
-}  // namespace
 
 int run_mesh_implicit(std::span<const std::string> args) {
   // --param may repeat: take every occurrence out before the generic scanner sees the rest.
@@ -130,6 +75,8 @@ int run_mesh_implicit(std::span<const std::string> args) {
   const auto start = std::chrono::steady_clock::now();
   ImplicitMesh result;
   try {
+    ProgressBar bar("meshing " + path);
+    s.progress = [&bar](double fraction) { bar.update(fraction); };
     const ImplicitSurface surface(f);
     result = mesh_implicit(surface, box, s);
   } catch (const std::invalid_argument& e) {
@@ -146,7 +93,8 @@ int run_mesh_implicit(std::span<const std::string> args) {
               st.multi_loop_cells, st.inaccurate_cells, st.rounds, st.max_vertex_error, st.uncertified_vertices);
   for (const std::string& limit : st.limits_hit) std::printf("limit reached: %s\n", limit.c_str());
   if (a.has("--no-check")) return 0;
-  const MeshValidity v = validate(result.mesh, {.threads = s.threads});
+  // The file as written is what users get: check that, not the mesh in memory.
+  const MeshValidity v = validate(read_mesh(*output), {.threads = s.threads});
   std::printf("%s", describe(v).c_str());
   return v.valid() ? 0 : 1;
 }

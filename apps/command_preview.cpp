@@ -2,6 +2,7 @@
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "file_arguments.hpp"
+#include "option_values.hpp"
 
 #include "genmod/tessellate/mesh_io.hpp"
 #include "genmod/tessellate/png_io.hpp"
@@ -23,7 +24,7 @@ int run_preview(std::span<const std::string> args) {
   const std::optional<std::string> output = a.value({"-o", "--output"});
   if (!output) throw UsageError("missing output file (-o FILE.png)");
   const int size = a.int_value({"--size"}, 512, 1, 8192);
-  check_output_writable(*output);
+  check_writable(*output);
   const Mesh mesh = read_mesh(input);
   if (mesh.triangles.empty()) throw MeshFileError("genmod: preview: '" + input + "' has no triangles");
   write_png(*output, preview(mesh, {.width = size, .height = size}));

@@ -49,6 +49,8 @@ std::vector<int> parse_tile_sizes(const std::string& text) {
 }
 
 int run_render(std::span<const std::string> args) {
+  for (const std::string& arg : args)
+    if (arg == "--3d") return run_render_shaded(args);
   static constexpr std::array<const char*, 2> kFlags{"--stats", "--brute-force"};
   static constexpr std::array<const char*, 6> kValued{"--size", "-o", "--output", "--threads", "--repeat", "--tiles"};
   const Arguments a(args, kFlags, kValued);
@@ -84,15 +86,24 @@ int run_render(std::span<const std::string> args) {
 }  // namespace
 
 const Command kRenderCommand{
-    "render", "MODEL.vm [--size N] [-o out.png] [--threads T] [--tiles A,B,..] [--repeat R] [--stats] [--brute-force]",
-    "render the sign of a 2-D implicit model over [-1,1]^2 to a PNG (white where f < 0)",
+    "render", "MODEL.vm [--size N] [-o out.png] [--threads T] [--tiles A,B,..] [--repeat R] [--stats] [--brute-force]\n"
+    "       genmod render MODEL.vm|IMPLICIT_NAME --3d [--size N] [--box x0,y0,z0,x1,y1,z1] [--view top|front|iso]\n"
+    "                     [--depth D] [-o out.png] [--threads T] [--brute-force]",
+    "render the sign of a 2-D implicit model over [-1,1]^2 to a PNG (white where f < 0), or a shaded 3-D picture",
     "  --size N       image width and height in pixels (default 1024)\n"
     "  -o, --output   PNG file to write (default out.png)\n"
     "  --threads T    worker threads, 0 = all cores (default 0)\n"
     "  --tiles A,B,.. tile widths of the subdivision levels below the image, decreasing (default 256,64,16)\n"
     "  --repeat R     render R times and report the median time (default 1)\n"
     "  --stats        print the tile subdivision statistics\n"
-    "  --brute-force  evaluate every pixel without intervals (the reference, for comparison)\n",
+    "  --brute-force  evaluate every pixel without intervals (the reference, for comparison)\n"
+    "With --3d (a 3-D model: a .vm file in x, y, z or an implicit gallery name):\n"
+    "  --size N       image width and height (default 512)\n"
+    "  --box B        the region x0,y0,z0,x1,y1,z1 (default: the gallery model's box, else [-1,1]^3)\n"
+    "  --view V       top (looking down z; the default for files), front (looking along +y) or iso\n"
+    "                 (the default for gallery models); front and iso render a cube around the box's ball\n"
+    "  --depth D      voxels along the view (default: cubic voxels)\n"
+    "  --brute-force  march every pixel's ray without intervals (the reference)\n",
     run_render};
 
 }  // namespace genmod::app

@@ -32,5 +32,7 @@ extern const Command kCheckCommand;
 
 // genmod mesh MODEL.vm ...: the implicit path of the mesh command.
 int run_mesh_implicit(std::span<const std::string> args);
+// genmod render MODEL --3d ...: the shaded 3-D path of the render command.
+int run_render_shaded(std::span<const std::string> args);
 
 }  // namespace genmod::app

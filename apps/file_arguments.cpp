@@ -1,13 +1,9 @@
-// mesh_file_argument and check_output_writable (file_arguments.hpp).
+// mesh_file_argument (file_arguments.hpp).
 #include "file_arguments.hpp"
 
 #include "commands.hpp"
 
 #include "genmod/tessellate/mesh_io.hpp"
-
-#include <unistd.h>
-
-#include <filesystem>
 
 namespace genmod::app {
 
@@ -18,19 +14,6 @@ const std::string& mesh_file_argument(const Arguments& a) {
   const std::string& input = a.positional()[0];
   if (!mesh_format(input)) throw UsageError("input '" + input + "': unknown mesh extension (use .obj, .ply, .stl or .off)");
   return input;
-}
-
-void check_output_writable(const std::string& output) {
-  std::error_code ec;
-  if (std::filesystem::exists(output, ec)) {
-    if (std::filesystem::is_directory(output, ec)) throw UsageError("output '" + output + "' is a directory");
-    if (::access(output.c_str(), W_OK) != 0) throw UsageError("output '" + output + "': file is not writable");
-    return;
-  }
-  const std::filesystem::path dir = std::filesystem::absolute(output).parent_path();
-  if (!std::filesystem::is_directory(dir, ec))
-    throw UsageError("output '" + output + "': no such directory " + dir.string());
-  if (::access(dir.c_str(), W_OK) != 0) throw UsageError("output '" + output + "': directory is not writable");
 }
 
 }  // namespace genmod::app

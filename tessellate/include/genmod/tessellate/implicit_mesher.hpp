@@ -30,6 +30,7 @@
 #include "genmod/kernel/interval.hpp"
 #include "genmod/kernel/tape.hpp"
 #include "genmod/tessellate/mesh.hpp"
+#include "genmod/tessellate/box3.hpp"
 
 #include <array>
 #include <cstddef>
@@ -57,8 +58,6 @@ class ImplicitSurface {
  private:
   Tape value_, gradient_, hessian_;
 };
-
-using Box3 = std::array<Interval, 3>;
 
 struct ImplicitMeshSettings {
   // Smallest cell edge length: cells are never split below it. Required, > 0.
