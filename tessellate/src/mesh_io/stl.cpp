@@ -14,7 +14,7 @@ namespace {
 // Vertex numbering by exact position, in the order of first appearance.
 class Welder {
  public:
-  explicit Welder(Mesh& mesh) : mesh_(mesh) {}
+  explicit Welder(Mesh& mesh, std::size_t expected_vertices = 0) : mesh_(mesh) { ids_.reserve(expected_vertices); }
   std::uint32_t index(const std::array<double, 3>& p) {
     const Key key{std::bit_cast<std::uint64_t>(p[0]), std::bit_cast<std::uint64_t>(p[1]),
                   std::bit_cast<std::uint64_t>(p[2])};
@@ -63,7 +63,7 @@ bool is_binary_stl(std::string_view bytes) {
 Mesh read_binary_stl(std::string_view bytes, const std::filesystem::path& path) {
   const std::size_t n = little_endian_u32(bytes.data() + 80);
   Mesh mesh;
-  Welder welder(mesh);
+  Welder welder(mesh, n / 2 + 3);  // a closed mesh has about half as many vertices as triangles
   mesh.triangles.reserve(n);
   for (std::size_t t = 0; t < n; ++t) {
     const char* facet = bytes.data() + 84 + 50 * t;
