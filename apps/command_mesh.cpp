@@ -1,17 +1,17 @@
 // genmod mesh NAME [--param k=v ...] [--res N] -o FILE: a gallery model as a triangle mesh.
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "option_values.hpp"
 
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
+#include "genmod/tessellate/mesh_io.hpp"
 
 #include <array>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -60,10 +60,9 @@ int run_mesh(std::span<const std::string> args) {
   const std::optional<std::string> output = a.value({"-o", "--output"});
   if (!output) throw UsageError("missing output file (-o FILE)");
   const int res = a.int_value({"--res"}, 64, 3, 4096);
-  std::string extension = std::filesystem::path(*output).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".obj" && extension != ".ply" && extension != ".stl" && extension != ".off")
+  if (!mesh_format(*output))
     throw UsageError("output '" + *output + "': unknown mesh extension (use .obj, .ply, .stl or .off)");
+  check_writable(*output);
 
   const models::Model* model = nullptr;
   Fn surface;

@@ -27,6 +27,8 @@ extern const Command kRenderCommand;
 extern const Command kInfoCommand;
 extern const Command kListCommand;
 extern const Command kMeshCommand;
+extern const Command kPreviewCommand;
+extern const Command kCheckCommand;
 
 // genmod mesh MODEL.vm ...: the implicit path of the mesh command.
 int run_mesh_implicit(std::span<const std::string> args);

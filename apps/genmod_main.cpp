@@ -10,7 +10,8 @@
 namespace genmod::app {
 namespace {
 
-constexpr std::array<const Command*, 4> kCommands{&kRenderCommand, &kInfoCommand, &kListCommand, &kMeshCommand};
+constexpr std::array<const Command*, 6> kCommands{&kRenderCommand, &kInfoCommand,    &kListCommand,
+                                                  &kMeshCommand,   &kPreviewCommand, &kCheckCommand};
 
 bool is_help(const std::string& s) { return s == "--help" || s == "-h" || s == "help"; }
 

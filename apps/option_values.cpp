@@ -52,13 +52,19 @@ Box3 parse_box(const std::string& text) {
   return box;
 }
 
-// The output's directory must exist and be writable before minutes of meshing start.
+// The output's directory must exist and be writable before minutes of meshing start. An
+// existing file needs only to be writable itself: a device such as /dev/full passes here (its
+// write errors are caught by the writers) even where its directory is not writable.
 void check_writable(const std::string& output) {
+  std::error_code ec;
+  if (std::filesystem::exists(output, ec)) {
+    if (std::filesystem::is_directory(output, ec)) throw UsageError("output '" + output + "' is a directory");
+    if (::access(output.c_str(), W_OK) != 0) throw UsageError("output '" + output + "': file is not writable");
+    return;
+  }
   const std::filesystem::path dir = std::filesystem::absolute(output).parent_path();
   if (!std::filesystem::is_directory(dir)) throw UsageError("output '" + output + "': no such directory " + dir.string());
   if (::access(dir.c_str(), W_OK) != 0) throw UsageError("output '" + output + "': directory is not writable");
-  if (std::filesystem::exists(output) && ::access(output.c_str(), W_OK) != 0)
-    throw UsageError("output '" + output + "': file is not writable");
 }
 
 }  // namespace genmod::app

@@ -21,8 +21,9 @@ double positive_option(const Arguments& a, std::initializer_list<std::string_vie
 // "x0,y0,z0,x1,y1,z1" with x0 < x1, y0 < y1, z0 < z1.
 Box3 parse_box(const std::string& text);
 
-// The output's directory must exist and be writable (and the file, if it exists), so that a
-// long computation does not end in a failed write.
+// The output must be writable: an existing file (not a directory) writable itself, a new one
+// in an existing, writable directory; so that a long computation does not end in a failed
+// write.
 void check_writable(const std::string& output);
 
 }  // namespace genmod::app

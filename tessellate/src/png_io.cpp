@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 namespace genmod {
@@ -52,7 +53,9 @@ void write_png(const std::string& path, const Image& image) {
   const bool closed = std::fclose(file.release()) == 0;
   if (!written || !closed) {
     const std::string why = !written ? std::string(header.message) : std::strerror(errno);
-    std::remove(path.c_str());  // no truncated file left behind
+    // No truncated file left behind; but never remove what is not a regular file (/dev/full).
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(path, ec)) std::filesystem::remove(path, ec);
     throw PngError("genmod: cannot write PNG '" + path + "': " + why);
   }
 }

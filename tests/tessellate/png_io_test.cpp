@@ -38,6 +38,16 @@ TEST(PngIo, UnwritablePathFailsNamingIt) {
   }
 }
 
+TEST(PngIo, FullDeviceFailsAndIsNotRemoved) {
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  for (int size : {4, 600}) {  // within stdio's buffer (fails at the close) and beyond it
+    Image noise(size, size);
+    for (std::size_t k = 0; k < noise.pixels.size(); ++k) noise.pixels[k] = static_cast<std::uint8_t>(k * 2654435761u >> 13);
+    EXPECT_THROW(write_png("/dev/full", noise), PngError) << size;
+    EXPECT_TRUE(std::filesystem::exists("/dev/full"));
+  }
+}
+
 TEST(PngIo, ReadingANonPngFailsNamingIt) {
   const std::string path = temp_path("not_a_png.png");
   {

@@ -1,4 +1,5 @@
-// Triangle meshes of parametric surfaces by uniform lattice sampling, and mesh file I/O.
+// Triangle meshes of parametric surfaces by uniform lattice sampling (and, through
+// mesh_io.hpp, mesh file I/O).
 //
 // A surface S(u, v) of dimension 3 is sampled on an N_u x N_v lattice (lattice.hpp, with
 // subfunction tables); vertex (i, j) is S(u_i, v_j) and has index i + N_u j. Each lattice quad
@@ -11,26 +12,14 @@
 // u_i = lo + (i (hi - lo)) / N_u (the lattice of N_u + 1 points without its last one, which
 // would repeat the first), and the quads of column N_u - 1 close onto column 0, so the seam
 // shares its vertices. Same for v. A torus with both periodic is a closed 2-manifold.
-//
-// File I/O goes through OpenMesh (kept out of this header). The format follows the
-// extension: .obj, .ply, .stl, .off (case-insensitive).
 #pragma once
 
 #include "genmod/kernel/fn.hpp"
 #include "genmod/tessellate/lattice.hpp"
-
-#include <array>
-#include <cstdint>
-#include <filesystem>
-#include <vector>
+#include "genmod/tessellate/mesh_io.hpp"
+#include "genmod/tessellate/triangle_mesh.hpp"
 
 namespace genmod {
-
-// A triangle mesh as plain arrays.
-struct Mesh {
-  std::vector<std::array<double, 3>> vertices;
-  std::vector<std::array<std::uint32_t, 3>> triangles;  // vertex indices
-};
 
 struct ParametricMeshOptions {
   bool periodic_u = false;
@@ -44,13 +33,5 @@ struct ParametricMeshOptions {
 // other than u's and v's, or too few samples.
 Mesh mesh_parametric(const Fn& surface, const LatticeAxis& u, const LatticeAxis& v,
                      const ParametricMeshOptions& options = {});
-
-// Writes the mesh; the format is chosen by the extension. Throws std::invalid_argument for
-// an unknown extension or an out-of-range vertex index, std::runtime_error when the file
-// cannot be written (the message names the path).
-void write_mesh(const Mesh& mesh, const std::filesystem::path& path);
-// Reads a mesh (OBJ, PLY, STL, OFF) with OpenMesh; polygons are triangulated. STL readers
-// merge vertices at equal positions. Throws std::runtime_error naming the path on failure.
-Mesh read_mesh(const std::filesystem::path& path);
 
 }  // namespace genmod

@@ -5,6 +5,8 @@
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/lattice.hpp"
 #include "genmod/tessellate/mesh.hpp"
+#include "genmod/tessellate/mesh_io.hpp"
 #include "genmod/tessellate/png_io.hpp"
+#include "genmod/tessellate/preview.hpp"
 #include "genmod/tessellate/raster2d.hpp"
 #include "genmod/tessellate/validate.hpp"
