@@ -2,7 +2,7 @@
 // tanglecube over [-2.5,2.5]^3, as min_feature halves, on 1 and 2 threads. Counters: triangles,
 // surface cells, and (measured once, outside the timing) the certified vertex distance and the
 // estimated face distance from validate().
-#include "genmod/kernel/vm_format.hpp"
+#include "benchmark_shapes.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/validate.hpp"
 
@@ -14,17 +14,11 @@ namespace {
 
 using namespace genmod;
 
-struct Shape {
-  const char* name;
-  const char* file;
-  double half;  // the box is [-half, half]^3
-};
+using bench::BenchmarkShape;
 
-constexpr Shape kShapes[] = {{"sphere_gyroid", "sphere_gyroid.vm", 5.0}, {"tanglecube", "tanglecube.vm", 2.5}};
-
-void mesh_shape(benchmark::State& state, const Shape& shape, double min_feature, int threads) {
-  const ImplicitSurface surface(load_vm(std::string(GENMOD_DATA_DIR) + "/" + shape.file));
-  const Box3 box{Interval(-shape.half, shape.half), Interval(-shape.half, shape.half), Interval(-shape.half, shape.half)};
+void mesh_shape(benchmark::State& state, const BenchmarkShape& shape, double min_feature, int threads) {
+  const ImplicitSurface surface(shape.load());
+  const Box3 box = shape.box();
   const ImplicitMeshSettings settings{.min_feature = min_feature, .threads = threads};
   ImplicitMesh m;
   for (auto _ : state) {
@@ -41,7 +35,7 @@ void mesh_shape(benchmark::State& state, const Shape& shape, double min_feature,
 }
 
 const bool registered = [] {
-  for (const Shape& shape : kShapes)
+  for (const BenchmarkShape& shape : bench::kBenchmarkShapes)
     for (double h : {0.1, 0.05, 0.025})
       for (int threads : {1, 2})
         benchmark::RegisterBenchmark(

@@ -1,6 +1,6 @@
 // render_shaded at 1024^2 on the peers' benchmark shapes (viewed from the top, voxels cubic)
 // against the per-pixel ray march that evaluates every voxel center down to the first hit.
-#include "genmod/kernel/vm_format.hpp"
+#include "benchmark_shapes.hpp"
 #include "genmod/tessellate/shaded_render.hpp"
 
 #include <benchmark/benchmark.h>
@@ -11,18 +11,11 @@ namespace {
 
 using namespace genmod;
 
-struct Shot {
-  const char* name;
-  const char* file;
-  double half;  // the box is [-half, half]^3
-};
+using bench::BenchmarkShape;
 
-constexpr Shot kShots[] = {{"sphere_gyroid", "sphere_gyroid.vm", 5.0}, {"tanglecube", "tanglecube.vm", 2.5}};
-
-void render(benchmark::State& state, const Shot& shot, bool brute_force, int size) {
-  const Tape tape(load_vm(std::string(GENMOD_DATA_DIR) + "/" + shot.file));
-  const Interval side(-shot.half, shot.half);
-  const ShadedOptions options{.size = size, .box = {side, side, side}};
+void render(benchmark::State& state, const BenchmarkShape& shot, bool brute_force, int size) {
+  const Tape tape(shot.load());
+  const ShadedOptions options{.size = size, .box = shot.box()};
   ShadedStats stats;
   for (auto _ : state) {
     ShadedImage image = brute_force ? render_shaded_brute_force(tape, options) : render_shaded(tape, options, &stats);
@@ -35,7 +28,7 @@ void render(benchmark::State& state, const Shot& shot, bool brute_force, int siz
 }
 
 const bool registered = [] {
-  for (const Shot& shot : kShots)
+  for (const BenchmarkShape& shot : bench::kBenchmarkShapes)
     for (bool brute_force : {false, true})
       benchmark::RegisterBenchmark(
           (std::string("BM_RenderShaded/") + shot.name + (brute_force ? "/ray_march" : "/subdivision") + "/1024").c_str(),
