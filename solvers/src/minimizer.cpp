@@ -90,6 +90,11 @@ class Search {
         c_(opt.equality_tolerance > 0.0 ? relax_equalities(constraint, opt.equality_tolerance) : constraint,
            unknowns),
         trivially_feasible_(constraint.is_constant(&constant_) && constant_ != 0.0 && constant_ == constant_) {
+    // Exact equalities (no relaxation): certified boxes holding feasible points give u.
+    if (opt.equality_tolerance == 0.0 && !trivially_feasible_) {
+      certifier_.emplace(constraint, unknowns);
+      if (!certifier_->active()) certifier_.reset();
+    }
     if (opt_.local_search) {
       std::optional<Tape> residual_tape;
       if (auto r = minimizer_detail::constraint_residuals(constraint)) residual_tape.emplace(*r, unknowns);
@@ -110,6 +115,8 @@ class Search {
   Feasibility constraint_on(std::span<const Interval> box);
   Bounds bound_objective(std::span<const Interval> box);
   void try_point(std::span<const double> q);
+  // Rule 1 for exact equalities: a sub-box of `box` certified to hold a feasible point.
+  void try_certified(std::span<const Interval> box);
   void push(Box box, int depth, double parent_key, const Interval& parent_f);
   Entry pop();
   double lower_bound() const;
@@ -129,6 +136,7 @@ class Search {
   const bool trivially_feasible_;
   IntervalEvaluator ev_;
   std::optional<minimizer_detail::LocalSearch> local_;
+  std::optional<minimizer_detail::FeasiblePointCertifier> certifier_;
 
   std::vector<Entry> heap_;
   std::vector<Entry> candidates_;
@@ -180,6 +188,19 @@ void Search::try_point(std::span<const double> q) {
   }
 }
 
+// B holds a point x with constraint(x) true (FeasiblePointCertifier), so f* <= f(x) <= sup f(B).
+void Search::try_certified(std::span<const Interval> box) {
+  const std::optional<Box> b = certifier_->find(box);
+  if (!b) return;
+  ++result_.certified_points;
+  const Interval fb = ev_.eval(inclusion_.tape(), *b)[0];
+  if (ev_.errors()[0] != kNoError || fb.is_empty()) return;
+  if (fb.hi() < u_) {
+    u_ = fb.hi();
+    best_ = midpoint(*b);
+  }
+}
+
 void Search::push(Box box, int depth, double parent_key, const Interval& parent_f) {
   const Feasibility feasible = constraint_on(box);
   if (feasible == Feasibility::No) return;
@@ -195,6 +216,7 @@ void Search::push(Box box, int depth, double parent_key, const Interval& parent_
     best_ = midpoint(box);
   }
   try_point(midpoint(box));
+  if (certifier_ && feasible == Feasibility::Maybe) try_certified(box);
   Entry e{key, seq_++, depth, std::move(box), f, std::move(b.grad), false};
   heap_.push_back(std::move(e));
   std::push_heap(heap_.begin(), heap_.end(), Later{});
@@ -304,7 +326,18 @@ MinimizeResult Search::run() {
       report.deepest = std::max(report.deepest, e.depth);
       if (local_ && (report.boxes_processed <= 4 || report.boxes_processed % 32 == 0)) {
         ++result_.local_searches;
-        try_point(local_->run(midpoint(e.box)));
+        const std::vector<double> q = local_->run(midpoint(e.box));
+        try_point(q);
+        if (certifier_ && q.size() == root_.size()) {  // a small box around the local minimum
+          Box around(q.size());
+          bool inside = true;
+          for (std::size_t i = 0; i < q.size(); ++i) {
+            const double r = 1e-7 * (1.0 + std::abs(q[i]));
+            around[i] = intersect(Interval(q[i] - r, q[i] + r), root_[i]);
+            inside = inside && std::isfinite(q[i]) && !around[i].is_empty();
+          }
+          if (inside) try_certified(around);
+        }
       }
       if (opt_.monotonicity_test && !monotonicity_test(e)) {
         step_callback();
