@@ -217,10 +217,10 @@ TEST(Minimizer, EqualityConstraintWithTolerance) {
   exact.limits.max_boxes = 2000;
   const MinimizeResult none = minimize_value(x(0) + x(1), c, kXY, square_box(-2, 2), exact);
   // Without relaxation the upper bound comes from boxes certified to hold a point of the circle
-  // (ExactEqualityGetsCertifiedFeasiblePoints); 2000 boxes are not enough for delta = 1e-6 at
-  // epsilon 1e-4: the search runs into its limit, says so, and both bounds stay valid.
-  EXPECT_EQ(none.report.limit, LimitHit::MaxBoxes);
-  EXPECT_FALSE(none.delta_reached);
+  // and the lower bound from the Lagrangian (ExactEqualityGetsCertifiedFeasiblePoints): well
+  // within 2000 boxes, a bracket of width delta.
+  EXPECT_EQ(none.report.limit, LimitHit::None);
+  EXPECT_TRUE(none.delta_reached);
   EXPECT_TRUE(none.minimum.contains(-std::sqrt(2.0))) << none.minimum;
   if (none.feasible_found) {
     const double px = none.best_point[0], py = none.best_point[1];
@@ -273,6 +273,30 @@ TEST(Minimizer, ExactEqualityGetsCertifiedFeasiblePoints) {
   EXPECT_GT(r3.certified_points, 0u);
   EXPECT_TRUE(r3.minimum.contains(-std::sqrt(5.0))) << r3.minimum;  // (2x + y) on the circle
   EXPECT_LE(r3.minimum.width(), opt3.delta);
+}
+
+// Issue 10, failure 3: Rosen-Suzuki (4 unknowns, 3 inequalities, [-3, 3]^4, f* = -44 at
+// (0, 1, 2, -1), the first and third constraints active) converges well under 1e5 boxes.
+TEST(Minimizer, RosenSuzukiConverges) {
+  const Fn x1 = x(0), x2 = x(1), x3 = x(2), x4 = x(3);
+  const Fn f = square(x1) + square(x2) + 2.0 * square(x3) + square(x4) - 5.0 * x1 - 5.0 * x2 - 21.0 * x3 + 7.0 * x4;
+  const Fn g1 = square(x1) + square(x2) + square(x3) + square(x4) + x1 - x2 + x3 - x4 - 8.0;
+  const Fn g2 = square(x1) + 2.0 * square(x2) + square(x3) + 2.0 * square(x4) - x1 - x4 - 10.0;
+  const Fn g3 = 2.0 * square(x1) + square(x2) + square(x3) + 2.0 * x1 - x2 - x4 - 5.0;
+  const Fn c = (g1 <= 0.0) && (g2 <= 0.0) && (g3 <= 0.0);
+  const int u[] = {0, 1, 2, 3};
+  const Box box(4, Interval(-3, 3));
+  MinimizeOptions opt;
+  opt.epsilon = 1e-4;
+  opt.delta = 1e-4;
+  opt.limits.max_boxes = 100000;
+  const MinimizeResult r = minimize(f, c, u, box, opt);
+  EXPECT_EQ(r.report.limit, LimitHit::None) << r.report.boxes_processed;
+  ASSERT_TRUE(r.feasible_found);
+  EXPECT_TRUE(r.minimum.contains(-44.0)) << r.minimum;
+  EXPECT_LE(r.minimum.width(), opt.delta);
+  const double minimizer[] = {0.0, 1.0, 2.0, -1.0};
+  EXPECT_TRUE(covered(r, minimizer));
 }
 
 TEST(Minimizer, ObjectiveErrorsAreNotFeasiblePoints) {

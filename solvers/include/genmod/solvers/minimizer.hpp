@@ -47,6 +47,17 @@
 // f*_eta, and since the relaxed feasible set contains the original one,
 // minimum.lo() <= f*_eta <= f* still bounds the original problem from below.
 //
+// Constraint use in the bounds: every box is first contracted with HC4 against the constraint
+// (only infeasible points are removed, so no minimizer is lost). When the constraint is a
+// conjunction, its inequalities g <= 0 and equalities g = 0 also give a Lagrangian lower
+// bound: f(x) >= f(x) + sum lambda_i g_i(x) at every feasible x for any lambda_i >= 0
+// (inequalities; any sign for equalities), so the inclusion of that function over a box is a
+// valid lower bound whatever lambda is. lambda is the least-squares KKT estimate at the best
+// point (constraints with g >= -1e-3 there count as active; inequality multipliers clipped at
+// 0); near a KKT point the Lagrangian is flat and its mean value form second order, so boxes at
+// a constrained minimizer need not shrink to width delta (Rosen-Suzuki: 1e6 boxes and a
+// 7e-3 bracket before, 2.4e4 boxes to delta 1e-4 now).
+//
 // The search is sequential and deterministic: the same input gives bitwise the same result
 // (ties in the best-first list are broken by insertion order).
 //
