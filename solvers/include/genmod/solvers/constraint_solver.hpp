@@ -128,8 +128,13 @@ struct SolveResult {
 
   // True when no limit was hit (every box was decided or accepted).
   bool complete() const noexcept { return report.limit == LimitHit::None; }
+  // Boxes with status s. Not the number of solutions: count(CertifiedUnique) counts boxes
+  // certified one by one, and a solution certified only through its component (Krawczyk on
+  // the component's hull, when Newton leaves boxes as wide as their Krawczyk image) sits in
+  // Possible boxes. The number of certified solutions is unique_components().
   std::size_t count(SolutionStatus s) const noexcept;
-  // Components certified to hold exactly one solution.
+  // Components certified to hold exactly one solution each (disjoint): the number of
+  // certified solutions.
   std::size_t unique_components() const noexcept;
 };
 
