@@ -29,6 +29,20 @@ bool continuous_on(const Fn& f, double lo, double hi) {
 
 const int kY[] = {1};
 
+// f(x1) = value has one root in `range`, at `root`: the solver finds one component and
+// certifies it (Krawczyk on the component: the boxes Newton leaves are as wide as their
+// Krawczyk image), which needs Newton to go through the operators in f.
+void expect_certified_root(const Fn& f, double value, Interval range, double root) {
+  SolveOptions o;
+  o.epsilon = 1e-10;
+  const SolveResult s = solve(eq(f, value), kY, {range}, o);
+  ASSERT_TRUE(s.complete());
+  ASSERT_EQ(s.components.size(), 1u);
+  EXPECT_TRUE(s.components[0].unique);
+  EXPECT_EQ(s.unique_components(), 1u);
+  EXPECT_TRUE(s.components[0].hull[0].contains(root));
+}
+
 // t in [0,1] with t^3 + t = x(1): strictly increasing, one root, continuous in x(1).
 TEST(OperatorContinuity, MonotoneInverseIsContinuous) {
   const Fn t = x(0);
@@ -51,15 +65,7 @@ TEST(OperatorContinuity, InverseWithSeveralRootsIsNotContinuous) {
 TEST(OperatorContinuity, InverseNestedInSolveIsCertified) {
   const Fn t = x(0);
   const Fn r = inverse(t * t * t + t, x(1), 0);  // r(0.625) = 0.5
-  SolveOptions o;
-  o.epsilon = 1e-10;
-  const SolveResult s = solve(eq(r, 0.5), kY, {Interval(0.0, 2.0)}, o);
-  ASSERT_TRUE(s.complete());
-  ASSERT_EQ(s.components.size(), 1u);
-  // Krawczyk on the component (the boxes Newton leaves are as wide as their Krawczyk image).
-  EXPECT_TRUE(s.components[0].unique);
-  EXPECT_EQ(s.unique_components(), 1u);
-  EXPECT_TRUE(s.components[0].hull[0].contains(0.625));
+  expect_certified_root(r, 0.5, Interval(0.0, 2.0), 0.625);
 }
 
 // sqrt(1 - x1^2) as a solve: one solution in x0 in [0, 2] (continuous); in [-2, 2] the first of
@@ -74,13 +80,7 @@ TEST(OperatorContinuity, SolveIsContinuousWhereTheSolutionIsUnique) {
   EXPECT_FALSE(continuous_on(two, 0.2, 0.4));
   EXPECT_FALSE(continuous_on(solve_all(c, u, {Interval(0.0, 2.0)}, 1e-9, 2), -0.5, 0.5));
   // Nested in solve: sqrt(1 - x1^2) = 0.8 at x1 = 0.6, certified.
-  SolveOptions o;
-  o.epsilon = 1e-10;
-  const SolveResult s = solve(eq(one, 0.8), kY, {Interval(0.0, 0.9)}, o);
-  ASSERT_TRUE(s.complete());
-  ASSERT_EQ(s.components.size(), 1u);
-  EXPECT_TRUE(s.components[0].unique);
-  EXPECT_TRUE(s.components[0].hull[0].contains(0.6));
+  expect_certified_root(one, 0.8, Interval(0.0, 0.9), 0.6);
 }
 
 // The integral of a continuous integrand is continuous; a step in the parameter is not.
