@@ -57,5 +57,38 @@ void BM_ConstrainedQuadratic(benchmark::State& state) {
 }
 BENCHMARK(BM_ConstrainedQuadratic)->ArgsProduct({{0, 1}, {0, 1}})->Unit(benchmark::kMillisecond);
 
+// Issue 10's constrained problems. Argument 0: Rosen-Suzuki (4 unknowns, 3 inequalities,
+// [-3, 3]^4, f* = -44), delta 1e-4 / 1e-6; 1: min x + y on the unit circle with an exact
+// equality (eta = 0), epsilon 1e-3. At most 1e6 boxes.
+void BM_Issue10Constrained(benchmark::State& state) {
+  const Fn x1 = x(0), x2 = x(1), x3 = x(2), x4 = x(3);
+  Fn f, c;
+  Box box;
+  MinimizeOptions opt;
+  if (state.range(0) == 0) {
+    f = square(x1) + square(x2) + 2.0 * square(x3) + square(x4) - 5.0 * x1 - 5.0 * x2 - 21.0 * x3 + 7.0 * x4;
+    c = (square(x1) + square(x2) + square(x3) + square(x4) + x1 - x2 + x3 - x4 - 8.0 <= 0.0) &&
+        (square(x1) + 2.0 * square(x2) + square(x3) + 2.0 * square(x4) - x1 - x4 - 10.0 <= 0.0) &&
+        (2.0 * square(x1) + square(x2) + square(x3) + 2.0 * x1 - x2 - x4 - 5.0 <= 0.0);
+    box = Box(4, Interval(-3, 3));
+    opt.delta = state.range(1) == 0 ? 1e-4 : 1e-6;
+    state.SetLabel(state.range(1) == 0 ? "RosenSuzuki delta 1e-4" : "RosenSuzuki delta 1e-6");
+  } else {
+    f = x1 + x2;
+    c = eq(square(x1) + square(x2), 1.0);
+    box = Box(2, Interval(-2, 2));
+    opt.epsilon = 1e-3;
+    state.SetLabel("circle equality eta 0");
+  }
+  const int unknowns[] = {0, 1, 2, 3};
+  MinimizeResult r;
+  for (auto _ : state) {
+    r = minimize(f, c, std::span<const int>(unknowns, box.size()), box, opt);
+    benchmark::DoNotOptimize(r.minimum);
+  }
+  report(state, r);
+}
+BENCHMARK(BM_Issue10Constrained)->Args({0, 0})->Args({0, 1})->Args({1, 0})->Unit(benchmark::kMillisecond)->Iterations(1);
+
 }  // namespace
 }  // namespace genmod

@@ -364,7 +364,7 @@ Interval IntervalEvaluator::other_op(const Clause& c, std::span<const double> k,
 
 // Runs custom call site `call`; custom operators use protected arithmetic in the default
 // rounding mode, so the evaluator's upward mode is suspended around them. Returns whether the
-// operator is continuous.
+// operator is continuous on the arguments' box.
 bool IntervalEvaluator::call(const Tape& tape, std::uint32_t call) {
   const CallSite& cs = tape.calls()[call];
   call_args_.resize(cs.num_args);
@@ -377,10 +377,11 @@ bool IntervalEvaluator::call(const Tape& tape, std::uint32_t call) {
   std::fill_n(slot_err_.begin() + cs.first_slot, cs.num_outputs, arg_err);
   std::fesetround(FE_TONEAREST);
   const CustomOp& op = dag::custom(cs.op_id);
-  op.inclusion(call_args_, std::span(slots_).subspan(cs.first_slot, cs.num_outputs),
-               std::span(slot_err_).subspan(cs.first_slot, cs.num_outputs));
+  const bool continuous =
+      op.inclusion_continuous(call_args_, std::span(slots_).subspan(cs.first_slot, cs.num_outputs),
+                              std::span(slot_err_).subspan(cs.first_slot, cs.num_outputs));
   std::fesetround(FE_UPWARD);
-  return op.continuous();
+  return continuous;
 }
 
 }  // namespace genmod

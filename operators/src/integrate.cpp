@@ -91,17 +91,34 @@ class IntegrateOp final : public CustomOp {
   }
 
   void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override {
+    enclose(args, out, err);
+  }
+
+  // Continuous where the integrand is: if f is continuous on [a, b] x P (the pieces below
+  // cover it), the integral is continuous in the limits (|f| is bounded) and in P (f is
+  // uniformly continuous there). An integrand that may jump gives no claim.
+  bool inclusion_continuous(std::span<const Interval> args, std::span<Interval> out,
+                            std::span<std::uint8_t> err) const override {
+    return enclose(args, out, err);
+  }
+
+  Fn derivative(std::span<const Fn> args, int k) const override { return leibniz(args, k); }
+
+ private:
+  // The inclusion; returns whether the integrand was continuous on every piece.
+  bool enclose(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const {
     const std::size_t m = out.size();
     for (const Interval& a : args)
       if (a.is_empty()) {
         std::fill(out.begin(), out.end(), Interval::empty());
-        return;
+        return false;
       }
     const Interval lower = args[0], upper = args[1];
     if (!lower.is_bounded() || !upper.is_bounded()) {
       std::fill(out.begin(), out.end(), Interval::entire());
-      return;
+      return false;
     }
+    bool continuous = true;
     IntervalEvaluator ev;
     std::vector<Interval> box(args.size() - 1);
     std::copy(args.begin() + 2, args.end(), box.begin() + 1);
@@ -110,6 +127,7 @@ class IntegrateOp final : public CustomOp {
     auto f = [&](double lo, double hi, std::vector<Interval>& value) {
       box[0] = Interval(lo, hi);
       const auto v = ev.eval(tape_, box);
+      continuous = continuous && ev.continuous();
       for (std::size_t j = 0; j < m; ++j) {
         value[j] = v[j];
         err[j] |= ev.errors()[j];
@@ -149,13 +167,16 @@ class IntegrateOp final : public CustomOp {
       const Interval r = g_upper[j] - g_lower[j];
       if (r.is_empty() || !r.is_bounded() || !std::isfinite(pad)) {
         out[j] = r.is_empty() ? r : Interval::entire();
+        continuous = false;
         continue;
       }
       out[j] = r + Interval(-pad, pad);
     }
+    return continuous;
   }
 
-  Fn derivative(std::span<const Fn> args, int k) const override {
+  // The Leibniz rule (see the header).
+  Fn leibniz(std::span<const Fn> args, int k) const {
     if (k < 2) {
       // Leibniz: the integrand at the limit, with the other arguments substituted.
       std::vector<Fn> at;

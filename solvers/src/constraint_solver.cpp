@@ -215,8 +215,10 @@ Outcome process(const Problem& p, Worker& w, Item it) {
   const SolutionStatus small = equality_open ? SolutionStatus::Possible : SolutionStatus::Boundary;
   if (width(unknowns) < opt.epsilon && delta_ok) return output(small);
   if (it.depth >= opt.limits.max_depth) {
+    // Not accepted, and the limit forbids a split: the box was not explored to the end, like
+    // the boxes left on the work list by the other limits.
     o.depth_limited = true;
-    return output(small);
+    return output(SolutionStatus::Unexplored);
   }
   const std::size_t dim = choose_dim(p, w, it, unknowns);
   if (!splittable(unknowns[dim])) return output(small);  // at machine precision

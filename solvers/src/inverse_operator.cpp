@@ -94,6 +94,7 @@ class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp
     invert_tape_ = std::make_shared<const Tape>(invert_t, inputs_);
     match_tape_ = std::make_shared<const Tape>(match, inputs_);
     const Fn dt = genmod::derivative(f, bound_);
+    dt_tape_ = std::make_shared<const Tape>(dt, inputs_);
     for (int c : free_) partials_.push_back(-genmod::derivative(f, c) / dt);
     constraint_ = eq(f, 0.0);
   }
@@ -119,18 +120,39 @@ class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp
   }
 
   void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override {
+    enclose(args, out, err);
+  }
+
+  bool inclusion_continuous(std::span<const Interval> args, std::span<Interval> out,
+                            std::span<std::uint8_t> err) const override {
+    return enclose(args, out, err);
+  }
+
+  Fn derivative(std::span<const Fn> args, int k) const override {
+    std::vector<Fn> at;
+    at.push_back(apply_custom(shared_from_this(), args));
+    at.insert(at.end(), args.begin(), args.end());
+    return compose_all(partials_.at(static_cast<std::size_t>(k)), inputs_, cat(at));
+  }
+
+ private:
+  // The inclusion; returns whether R is continuous on the box `args` (see the header): F is
+  // continuous on domain x args, changes sign between the domain's ends for every parameter
+  // value, and has exactly one root in the domain (F strictly monotone in t, or the solver's
+  // one component certified to hold exactly one root for every parameter value).
+  bool enclose(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const {
     for (const Interval& a : args) {
       if (a.is_empty()) {  // an argument certainly failed: so does the result
         out[0] = Interval::empty();
         err[0] |= kCertainError;
-        return;
+        return false;
       }
     }
     for (const Interval& a : args) {
       if (!a.is_bounded()) {
         out[0] = domain_;
         err[0] |= kMaybeError;
-        return;
+        return false;
       }
     }
     // Accept boxes a little narrower than the spread the parameters cause (not much tighter is
@@ -145,37 +167,47 @@ class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp
     if (r.boxes.empty()) {
       out[0] = Interval::empty();
       err[0] |= kCertainError;
-      return;
+      return false;
     }
     Interval h = Interval::empty();
     for (const SolutionBox& b : r.boxes) h = hull(h, b.box[0]);
     const Interval margin(-epsilon_, epsilon_);
     out[0] = intersect(h + margin, domain_);
-    if (!r.complete() || !bracketed(args)) err[0] |= kMaybeError;
+    bool continuous = false;
+    if (!r.complete() || !bracketed(args, &continuous)) {
+      err[0] |= kMaybeError;
+      return false;
+    }
+    const bool one_root = (r.components.size() == 1 && r.components[0].unique) || monotone(args);
+    return continuous && one_root;
   }
 
-  Fn derivative(std::span<const Fn> args, int k) const override {
-    std::vector<Fn> at;
-    at.push_back(apply_custom(shared_from_this(), args));
-    at.insert(at.end(), args.begin(), args.end());
-    return compose_all(partials_.at(static_cast<std::size_t>(k)), inputs_, cat(at));
-  }
-
- private:
   // True if F changes sign strictly between the domain's ends for every parameter value in
-  // `args`, and F cannot fail anywhere on domain x args.
-  bool bracketed(std::span<const Interval> args) const {
+  // `args`, and F cannot fail anywhere on domain x args; *continuous says whether F is also
+  // continuous there (no jump).
+  bool bracketed(std::span<const Interval> args, bool* continuous) const {
     IntervalEvaluator ev;
     std::vector<Interval> box(inputs_.size());
     std::copy(args.begin(), args.end(), box.begin() + 1);
     box[0] = domain_;
     ev.eval(*tape_, box);
     if (ev.errors()[0] != kNoError) return false;
+    *continuous = ev.continuous();
     box[0] = Interval(domain_.lo());
     const Interval lo = ev.eval(*tape_, box)[0];
     box[0] = Interval(domain_.hi());
     const Interval hi = ev.eval(*tape_, box)[0];
     return (lo.hi() < 0.0 && hi.lo() > 0.0) || (lo.lo() > 0.0 && hi.hi() < 0.0);
+  }
+
+  // True if dF/dt excludes 0 on domain x args (F strictly monotone in t: at most one root).
+  bool monotone(std::span<const Interval> args) const {
+    IntervalEvaluator ev;
+    std::vector<Interval> box(inputs_.size());
+    std::copy(args.begin(), args.end(), box.begin() + 1);
+    box[0] = domain_;
+    const Interval d = ev.eval(*dt_tape_, box)[0];
+    return ev.errors()[0] == kNoError && !d.is_empty() && !d.contains_zero();
   }
 
   int bound_;               // the scratch coordinate standing for t inside F
@@ -185,6 +217,7 @@ class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp
   double epsilon_;
   std::shared_ptr<const Tape> tape_;  // F(t, free)
   std::shared_ptr<const Tape> invert_tape_, match_tape_;  // its two terms, for point evaluation
+  std::shared_ptr<const Tape> dt_tape_;  // dF/dt(t, free): the monotonicity test
   std::vector<Fn> partials_;          // dR/d free_k as functions of (t, free)
   Fn constraint_;                     // F == 0
 };

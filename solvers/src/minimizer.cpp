@@ -4,6 +4,10 @@
 #include "genmod/solvers/minimizer_detail.hpp"
 
 #include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/solvers/constraint_system.hpp"
+#include "genmod/solvers/contractor.hpp"
+
+#include <Eigen/Dense>
 
 #include <algorithm>
 #include <chrono>
@@ -90,6 +94,17 @@ class Search {
         c_(opt.equality_tolerance > 0.0 ? relax_equalities(constraint, opt.equality_tolerance) : constraint,
            unknowns),
         trivially_feasible_(constraint.is_constant(&constant_) && constant_ != 0.0 && constant_ == constant_) {
+    if (!trivially_feasible_) {
+      system_.emplace(opt.equality_tolerance > 0.0 ? relax_equalities(constraint, opt.equality_tolerance) : constraint,
+                      unknowns);
+      hc4_.emplace(*system_);
+      build_lagrangian(objective, unknowns);
+    }
+    // Exact equalities (no relaxation): certified boxes holding feasible points give u.
+    if (opt.equality_tolerance == 0.0 && !trivially_feasible_) {
+      certifier_.emplace(constraint, unknowns);
+      if (!certifier_->active()) certifier_.reset();
+    }
     if (opt_.local_search) {
       std::optional<Tape> residual_tape;
       if (auto r = minimizer_detail::constraint_residuals(constraint)) residual_tape.emplace(*r, unknowns);
@@ -108,8 +123,18 @@ class Search {
   };
 
   Feasibility constraint_on(std::span<const Interval> box);
+  // The Lagrangian lower bound: for multipliers lambda (>= 0 for inequalities g <= 0, any
+  // sign for equalities g = 0), f(x) >= L(x) = f(x) + sum lambda_i g_i(x) at every feasible x,
+  // so inf L over a box bounds f over its feasible points from below, whatever lambda is.
+  // With lambda near the KKT multipliers of the best point, L is flat there and its mean
+  // value form is second order: boxes at the minimizer need not shrink to width delta.
+  void build_lagrangian(const Fn& objective, std::span<const int> unknowns);
+  void update_multipliers();
+  double lagrangian_bound(std::span<const Interval> box);
   Bounds bound_objective(std::span<const Interval> box);
   void try_point(std::span<const double> q);
+  // Rule 1 for exact equalities: a sub-box of `box` certified to hold a feasible point.
+  void try_certified(std::span<const Interval> box);
   void push(Box box, int depth, double parent_key, const Interval& parent_f);
   Entry pop();
   double lower_bound() const;
@@ -129,6 +154,17 @@ class Search {
   const bool trivially_feasible_;
   IntervalEvaluator ev_;
   std::optional<minimizer_detail::LocalSearch> local_;
+  std::optional<minimizer_detail::FeasiblePointCertifier> certifier_;
+  std::optional<ConstraintSystem> system_;  // the constraint (relaxed if eta > 0), for HC4
+  std::optional<Hc4Contractor> hc4_;        // keeps a reference to *system_
+  // Lagrangian: g_i of the top-level conjuncts (g <= 0 or g = 0), multipliers as extra inputs.
+  std::vector<Fn> g_;
+  std::vector<std::uint8_t> g_equality_;
+  std::optional<InclusionFunction> lagrangian_;
+  std::optional<Tape> kkt_;       // g_i, grad f, grad g_i at a point (over the unknowns)
+  std::vector<double> lambda_;    // current multipliers (all 0: no bound)
+  bool multipliers_stale_ = false;
+  PointEvaluator pe_;
 
   std::vector<Entry> heap_;
   std::vector<Entry> candidates_;
@@ -147,6 +183,91 @@ Feasibility Search::constraint_on(std::span<const Interval> box) {
   if (c.is_empty() || err == kCertainError || (c.lo() == 0.0 && c.hi() == 0.0)) return Feasibility::No;
   if (err == kNoError && !c.contains_zero()) return Feasibility::Yes;
   return Feasibility::Maybe;
+}
+
+void Search::build_lagrangian(const Fn& objective, std::span<const int> unknowns) {
+  if (!system_->is_conjunction()) return;
+  for (const ConstraintSystem::Conjunct& c : system_->conjuncts()) {
+    const Fn& h = system_->atoms()[c.atom].h;
+    switch (c.rel) {
+      case Relation::Le:
+      case Relation::Lt: g_.push_back(h), g_equality_.push_back(0); break;
+      case Relation::Ge:
+      case Relation::Gt: g_.push_back(-h), g_equality_.push_back(0); break;
+      case Relation::Eq: g_.push_back(h), g_equality_.push_back(1); break;
+      default: break;  // != and "nonzero" give no bound
+    }
+  }
+  if (g_.empty()) return;
+  // Multipliers live in coordinates the problem does not use.
+  std::uint64_t used = objective.input_mask() | system_->atoms()[0].h.input_mask();
+  for (int u : unknowns) used |= std::uint64_t{1} << u;
+  for (const Fn& g : g_) used |= g.input_mask();
+  std::vector<int> inputs(unknowns.begin(), unknowns.end());
+  Fn l = objective;
+  for (int i = kMaxInputs - 1; i >= 0 && inputs.size() < unknowns.size() + g_.size(); --i) {
+    if (used & (std::uint64_t{1} << i)) continue;
+    l = l + x(i) * g_[inputs.size() - unknowns.size()];
+    inputs.push_back(i);
+  }
+  if (inputs.size() != unknowns.size() + g_.size()) {
+    g_.clear();
+    return;
+  }
+  try {
+    std::vector<NodeId> parts;
+    for (const Fn& g : g_) parts.push_back(g.node(0));
+    for (int u : unknowns) parts.push_back(derivative(objective, u).node(0));
+    for (const Fn& g : g_)
+      for (int u : unknowns) parts.push_back(derivative(g, u).node(0));
+    kkt_.emplace(Fn(parts), unknowns);
+    lagrangian_.emplace(l, inputs);
+  } catch (const std::exception&) {  // no derivative: no Lagrangian bound
+    g_.clear();
+    kkt_.reset();
+    lagrangian_.reset();
+    return;
+  }
+  lambda_.assign(g_.size(), 0.0);
+}
+
+// Least squares grad f + sum lambda_i grad g_i = 0 over the constraints active at the best
+// point (inequality multipliers clipped at 0). Not rigorous, and it need not be: any lambda of
+// the right signs gives a valid bound.
+void Search::update_multipliers() {
+  multipliers_stale_ = false;
+  if (!lagrangian_ || best_.empty()) return;
+  const std::size_t n = best_.size(), m = g_.size();
+  const auto v = pe_.eval(*kkt_, best_);
+  std::vector<std::size_t> active;
+  for (std::size_t i = 0; i < m; ++i)
+    if (g_equality_[i] || (std::isfinite(v[i]) && v[i] >= -1e-3)) active.push_back(i);
+  std::fill(lambda_.begin(), lambda_.end(), 0.0);
+  if (active.empty()) return;
+  Eigen::MatrixXd a(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(active.size()));
+  Eigen::VectorXd b(static_cast<Eigen::Index>(n));
+  for (std::size_t j = 0; j < n; ++j) {
+    b(static_cast<Eigen::Index>(j)) = -v[m + j];
+    for (std::size_t k = 0; k < active.size(); ++k)
+      a(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(k)) = v[m + n + active[k] * n + j];
+  }
+  if (!a.allFinite() || !b.allFinite()) return;
+  const Eigen::VectorXd lam = a.colPivHouseholderQr().solve(b);
+  for (std::size_t k = 0; k < active.size(); ++k) {
+    const double l = lam(static_cast<Eigen::Index>(k));
+    if (!std::isfinite(l)) return std::fill(lambda_.begin(), lambda_.end(), 0.0);
+    lambda_[active[k]] = g_equality_[active[k]] ? l : std::max(l, 0.0);
+  }
+}
+
+double Search::lagrangian_bound(std::span<const Interval> box) {
+  if (!lagrangian_ || std::all_of(lambda_.begin(), lambda_.end(), [](double l) { return l == 0.0; })) return -kInf;
+  std::vector<Interval> in(box.begin(), box.end());
+  for (double l : lambda_) in.emplace_back(l);
+  const Interval v = lagrangian_->eval(in, opt_.inclusion_forms)[0];
+  // Points where L fails are points where f or some g_i fails: not feasible.
+  if (v.is_empty()) return -kInf;
+  return v.lo();
 }
 
 Search::Bounds Search::bound_objective(std::span<const Interval> box) {
@@ -177,24 +298,50 @@ void Search::try_point(std::span<const double> q) {
   if (fq.hi() < u_) {
     u_ = fq.hi();
     best_.assign(q.begin(), q.end());
+    multipliers_stale_ = true;
+  }
+}
+
+// B holds a point x with constraint(x) true (FeasiblePointCertifier), so f* <= f(x) <= sup f(B).
+void Search::try_certified(std::span<const Interval> box) {
+  const std::optional<Box> b = certifier_->find(box);
+  if (!b) return;
+  ++result_.certified_points;
+  const Interval fb = ev_.eval(inclusion_.tape(), *b)[0];
+  if (ev_.errors()[0] != kNoError || fb.is_empty()) return;
+  if (fb.hi() < u_) {
+    u_ = fb.hi();
+    best_ = midpoint(*b);
+    multipliers_stale_ = true;
   }
 }
 
 void Search::push(Box box, int depth, double parent_key, const Interval& parent_f) {
+  // Contract with the constraint first (HC4 removes only infeasible points, so every minimizer
+  // stays in the box): tighter objective bounds, and infeasible boxes die early.
+  if (hc4_) {
+    for (int pass = 0; pass < 4; ++pass) {
+      const double w0 = width(box);
+      if (!hc4_->contract(box)) return;
+      if (!(width(box) < 0.9 * w0)) break;
+    }
+  }
   const Feasibility feasible = constraint_on(box);
   if (feasible == Feasibility::No) return;
   Bounds b = bound_objective(box);
   if (b.empty) return;
   Interval f = intersect(b.f, parent_f);
   if (f.is_empty()) f = b.f;
-  const double key = std::max(f.lo(), parent_key);
+  const double key = std::max({f.lo(), parent_key, lagrangian_bound(box)});
   if (key > u_) return;
   // Rule 2: the whole box is feasible, so any of its points bounds the minimum by ub f(box).
   if (feasible == Feasibility::Yes && b.no_error && f.hi() < u_) {
     u_ = f.hi();
     best_ = midpoint(box);
+    multipliers_stale_ = true;
   }
   try_point(midpoint(box));
+  if (certifier_ && feasible == Feasibility::Maybe) try_certified(box);
   Entry e{key, seq_++, depth, std::move(box), f, std::move(b.grad), false};
   heap_.push_back(std::move(e));
   std::push_heap(heap_.begin(), heap_.end(), Later{});
@@ -298,13 +445,25 @@ MinimizeResult Search::run() {
         stopped = true;
         break;
       }
+      if (multipliers_stale_) update_multipliers();
       Entry e = pop();
       if (e.key > u_) continue;  // purged: its lower bound exceeds a verified value
       ++report.boxes_processed;
       report.deepest = std::max(report.deepest, e.depth);
       if (local_ && (report.boxes_processed <= 4 || report.boxes_processed % 32 == 0)) {
         ++result_.local_searches;
-        try_point(local_->run(midpoint(e.box)));
+        const std::vector<double> q = local_->run(midpoint(e.box));
+        try_point(q);
+        if (certifier_ && q.size() == root_.size()) {  // a small box around the local minimum
+          Box around(q.size());
+          bool inside = true;
+          for (std::size_t i = 0; i < q.size(); ++i) {
+            const double r = 1e-7 * (1.0 + std::abs(q[i]));
+            around[i] = intersect(Interval(q[i] - r, q[i] + r), root_[i]);
+            inside = inside && std::isfinite(q[i]) && !around[i].is_empty();
+          }
+          if (inside) try_certified(around);
+        }
       }
       if (opt_.monotonicity_test && !monotonicity_test(e)) {
         step_callback();

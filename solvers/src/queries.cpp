@@ -206,6 +206,7 @@ ClosestPoint closest_point(const Fn& shape, std::span<const double> p, std::span
   const MinimizeResult m = minimize(d2, Fn(1.0), params, box, opt);
   ClosestPoint out;
   out.complete = m.report.limit == LimitHit::None;
+  out.epsilon = opt.epsilon;
   const Interval squared = intersect(m.minimum, Interval::unchecked(0.0, std::numeric_limits<double>::infinity()));
   out.distance = sqrt(squared);
   out.parameters = m.best_point;

@@ -123,55 +123,12 @@ class SolveOp : public CustomOp, public std::enable_shared_from_this<SolveOp> {
   }
 
   void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override {
-    auto all = [&](const Interval& v, std::uint8_t e) {
-      std::fill(out.begin(), out.end(), v);
-      for (auto& b : err) b |= e;
-    };
-    for (const Interval& a : args)
-      if (a.is_empty()) return all(Interval::empty(), kCertainError);
-    for (const Interval& a : args) {
-      if (!a.is_bounded()) {
-        std::copy(domain_.begin(), domain_.end(), out.begin());
-        for (auto& b : err) b |= kMaybeError;
-        return;
-      }
-    }
-    SolveOptions opt;
-    opt.epsilon = std::max(epsilon_, 0.01 * width(args));
-    opt.threads = 1;
-    opt.limits.max_boxes = 20000;
-    const SolveResult r = genmod::solve(constraint_, unknowns_, domain_, opt, FreeParameters{free_, Box(args.begin(), args.end())});
-    if (r.boxes.empty()) return all(Interval::empty(), kCertainError);
-    const Interval margin(-epsilon_, epsilon_);
-    const std::size_t n = unknowns_.size();
-    Box h(n, Interval::empty());
-    for (std::size_t k = 0; k < n; ++k) {
-      for (const SolutionBox& b : r.boxes) h[k] = hull(h[k], b.box[k]);
-      h[k] = intersect(h[k] + margin, domain_[k]);
-    }
-    bool exists = false;
-    for (const SolutionBox& b : r.boxes)
-      exists = exists || b.status == SolutionStatus::CertifiedUnique || b.status == SolutionStatus::Feasible;
-    if (!max_solutions_) {
-      std::copy(h.begin(), h.end(), out.begin());
-      if (!exists || !r.complete())
-        for (auto& b : err) b |= kMaybeError;
-      return;
-    }
-    // Solution slot j holds some solution (any of them may come j-th for some parameter value),
-    // and is certainly present when j < the number of components certified to hold exactly one
-    // solution for every parameter value (they are disjoint).
-    const std::size_t k_max = static_cast<std::size_t>(max_solutions_);
-    const std::size_t sure = r.complete() ? std::min(k_max, r.unique_components()) : 0;
-    const bool all_unique = r.complete() && r.unique_components() == r.components.size();
-    const std::size_t most = all_unique ? std::min(k_max, r.components.size()) : k_max;
-    out[0] = Interval(static_cast<double>(sure), static_cast<double>(most));
-    for (std::size_t j = 0; j < k_max; ++j)
-      for (std::size_t k = 0; k < n; ++k) {
-        out[1 + j * n + k] = h[k];
-        if (j >= sure) err[1 + j * n + k] |= kMaybeError;
-      }
-    if (!r.complete()) err[0] |= kMaybeError;
+    enclose(args, out, err);
+  }
+
+  bool inclusion_continuous(std::span<const Interval> args, std::span<Interval> out,
+                            std::span<std::uint8_t> err) const override {
+    return enclose(args, out, err);
   }
 
   Fn derivative(std::span<const Fn> args, int k) const override {
@@ -197,6 +154,70 @@ class SolveOp : public CustomOp, public std::enable_shared_from_this<SolveOp> {
   }
 
  private:
+  // The inclusion; returns whether the solution map is continuous on the box `args`: the
+  // first-solution operator, a complete search, and one component certified to hold exactly
+  // one solution for every parameter value (see the header).
+  bool enclose(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const {
+    auto all = [&](const Interval& v, std::uint8_t e) {
+      std::fill(out.begin(), out.end(), v);
+      for (auto& b : err) b |= e;
+      return false;
+    };
+    for (const Interval& a : args)
+      if (a.is_empty()) return all(Interval::empty(), kCertainError);
+    for (const Interval& a : args) {
+      if (!a.is_bounded()) {
+        std::copy(domain_.begin(), domain_.end(), out.begin());
+        for (auto& b : err) b |= kMaybeError;
+        return false;
+      }
+    }
+    SolveOptions opt;
+    opt.epsilon = std::max(epsilon_, 0.01 * width(args));
+    opt.threads = 1;
+    opt.limits.max_boxes = 20000;
+    const SolveResult r = genmod::solve(constraint_, unknowns_, domain_, opt, FreeParameters{free_, Box(args.begin(), args.end())});
+    if (r.boxes.empty()) return all(Interval::empty(), kCertainError);
+    const Interval margin(-epsilon_, epsilon_);
+    const std::size_t n = unknowns_.size();
+    Box h(n, Interval::empty());
+    for (std::size_t k = 0; k < n; ++k) {
+      for (const SolutionBox& b : r.boxes) h[k] = hull(h[k], b.box[k]);
+      h[k] = intersect(h[k] + margin, domain_[k]);
+    }
+    // A solution exists for every parameter value in a certified box, an inner box or a
+    // component certified unique (Krawczyk on its hull: its members may all be Possible).
+    bool exists = r.unique_components() > 0;
+    for (const SolutionBox& b : r.boxes)
+      exists = exists || b.status == SolutionStatus::CertifiedUnique || b.status == SolutionStatus::Feasible;
+    if (!max_solutions_) {
+      std::copy(h.begin(), h.end(), out.begin());
+      if (!exists || !r.complete()) {
+        for (auto& b : err) b |= kMaybeError;
+        return false;
+      }
+      // One solution for every parameter value, in the component's hull (where the
+      // equalities are continuous and the other atoms true): a limit of solutions is a
+      // solution, hence the solution. Several components: the first one may change.
+      return r.components.size() == 1 && r.components[0].unique;
+    }
+    // Solution slot j holds some solution (any of them may come j-th for some parameter value),
+    // and is certainly present when j < the number of components certified to hold exactly one
+    // solution for every parameter value (they are disjoint).
+    const std::size_t k_max = static_cast<std::size_t>(max_solutions_);
+    const std::size_t sure = r.complete() ? std::min(k_max, r.unique_components()) : 0;
+    const bool all_unique = r.complete() && r.unique_components() == r.components.size();
+    const std::size_t most = all_unique ? std::min(k_max, r.components.size()) : k_max;
+    out[0] = Interval(static_cast<double>(sure), static_cast<double>(most));
+    for (std::size_t j = 0; j < k_max; ++j)
+      for (std::size_t k = 0; k < n; ++k) {
+        out[1 + j * n + k] = h[k];
+        if (j >= sure) err[1 + j * n + k] |= kMaybeError;
+      }
+    if (!r.complete()) err[0] |= kMaybeError;
+    return false;  // the count is a step function, and solutions may swap slots
+  }
+
   // Newton steps on the square equality system from xs, kept while they stay in `hull` and
   // reduce the residual's max norm.
   void refine(std::vector<double>& xs, std::span<const double> args, const Box& hull) const {

@@ -218,6 +218,32 @@ TEST(ConstraintSolver, LimitsAreReported) {
   EXPECT_FALSE(r.complete());
 }
 
+// Issue 10, failure 5: a box that max_depth stopped from being split was not accepted (it is
+// wider than epsilon): it is Unexplored like every box a limit leaves, never Possible or
+// Boundary, and the search is not complete.
+TEST(ConstraintSolver, DepthLimitedBoxesAreUnexplored) {
+  SolveOptions o = plain(1e-9);
+  o.limits.max_depth = 6;
+  for (const Fn& c : {eq(square(X) + square(Y), 1.0), square(X) + square(Y) <= 1.0}) {
+    const SolveResult r = solve(c, kU, kSquare, o);
+    EXPECT_EQ(r.report.limit, LimitHit::MaxDepth);
+    EXPECT_FALSE(r.complete());
+    EXPECT_GT(r.count(SolutionStatus::Unexplored), 0u);
+    EXPECT_EQ(r.count(SolutionStatus::Possible), 0u);
+    EXPECT_EQ(r.count(SolutionStatus::Boundary), 0u);
+    for (const SolutionBox& b : r.boxes) {
+      if (b.status == SolutionStatus::Unexplored) {
+        EXPECT_EQ(b.depth, 6);
+        EXPECT_GT(width(b.box), o.epsilon);
+      }
+    }
+    for (int i = 0; i < 360; ++i) {
+      const double t = 2 * std::numbers::pi * i / 360;
+      EXPECT_TRUE(covered(r, {std::cos(t), std::sin(t)}, 1e-15)) << i;
+    }
+  }
+}
+
 TEST(ConstraintSolver, BadInput) {
   const Fn c = eq(X, Y);
   const double nan = std::nan("");

@@ -216,15 +216,15 @@ TEST(Minimizer, EqualityConstraintWithTolerance) {
   MinimizeOptions exact;
   exact.limits.max_boxes = 2000;
   const MinimizeResult none = minimize_value(x(0) + x(1), c, kXY, square_box(-2, 2), exact);
-  // Without relaxation only points exactly on the circle in floating point (such as (-1, 0))
-  // can be proven feasible, so the bracket stays wide (the thesis's caveat): the search runs
-  // into its limit, says so, and both bounds stay valid.
-  EXPECT_EQ(none.report.limit, LimitHit::MaxBoxes);
-  EXPECT_FALSE(none.delta_reached);
+  // Without relaxation the upper bound comes from boxes certified to hold a point of the circle
+  // and the lower bound from the Lagrangian (ExactEqualityGetsCertifiedFeasiblePoints): well
+  // within 2000 boxes, a bracket of width delta.
+  EXPECT_EQ(none.report.limit, LimitHit::None);
+  EXPECT_TRUE(none.delta_reached);
   EXPECT_TRUE(none.minimum.contains(-std::sqrt(2.0))) << none.minimum;
   if (none.feasible_found) {
     const double px = none.best_point[0], py = none.best_point[1];
-    EXPECT_EQ(px * px + py * py, 1.0);
+    EXPECT_NEAR(px * px + py * py, 1.0, 1e-9);
   }
 
   MinimizeOptions opt;
@@ -238,6 +238,64 @@ TEST(Minimizer, EqualityConstraintWithTolerance) {
   EXPECT_NEAR(r.minimum.hi(), -std::sqrt(2.0), 1e-4);
   EXPECT_LE(std::abs(r.best_point[0] * r.best_point[0] + r.best_point[1] * r.best_point[1] - 1.0), 1e-6 + 1e-12);
   const double minimizer[] = {-std::sqrt(0.5), -std::sqrt(0.5)};
+  EXPECT_TRUE(covered(r, minimizer));
+}
+
+// Issue 10, failure 4: with an exact equality (eta = 0) the search used to split boxes down to
+// machine precision until max_boxes. Interval Newton on the equality in a sub-box certifies
+// boxes that hold a feasible point; their objective bound is a rigorous upper bound, so the
+// search terminates with a bracket of width delta around f* = -sqrt(2).
+TEST(Minimizer, ExactEqualityGetsCertifiedFeasiblePoints) {
+  const Fn c = eq(square(x(0)) + square(x(1)), Fn(1.0));
+  MinimizeOptions opt;
+  opt.epsilon = 1e-3;
+  opt.limits.max_boxes = 100000;
+  const MinimizeResult r = minimize(x(0) + x(1), c, kXY, square_box(-2, 2), opt);
+  EXPECT_EQ(r.report.limit, LimitHit::None);
+  ASSERT_TRUE(r.feasible_found);
+  EXPECT_GT(r.certified_points, 0u);
+  EXPECT_TRUE(r.delta_reached);
+  EXPECT_TRUE(r.minimum.contains(-std::sqrt(2.0))) << r.minimum;
+  EXPECT_LE(r.minimum.width(), opt.delta);
+  const double minimizer[] = {-std::sqrt(0.5), -std::sqrt(0.5)};
+  EXPECT_TRUE(covered(r, minimizer));
+  // best_point is the midpoint of a tiny certified box around a point on the circle.
+  EXPECT_NEAR(r.best_point[0] * r.best_point[0] + r.best_point[1] * r.best_point[1], 1.0, 1e-9);
+  // Two equalities in three unknowns: the circle x^2 + y^2 = 1 in the plane z = x; min x + y + z.
+  const int xyz[] = {0, 1, 2};
+  const Fn c3 = eq(square(x(0)) + square(x(1)), Fn(1.0)) && eq(x(2), x(0));
+  const Box b3 = {Interval(-2, 2), Interval(-2, 2), Interval(-2, 2)};
+  MinimizeOptions opt3 = opt;
+  opt3.delta = 1e-5;
+  const MinimizeResult r3 = minimize_value(x(0) + x(1) + x(2), c3, xyz, b3, opt3);
+  EXPECT_EQ(r3.report.limit, LimitHit::None);
+  ASSERT_TRUE(r3.feasible_found);
+  EXPECT_GT(r3.certified_points, 0u);
+  EXPECT_TRUE(r3.minimum.contains(-std::sqrt(5.0))) << r3.minimum;  // (2x + y) on the circle
+  EXPECT_LE(r3.minimum.width(), opt3.delta);
+}
+
+// Issue 10, failure 3: Rosen-Suzuki (4 unknowns, 3 inequalities, [-3, 3]^4, f* = -44 at
+// (0, 1, 2, -1), the first and third constraints active) converges well under 1e5 boxes.
+TEST(Minimizer, RosenSuzukiConverges) {
+  const Fn x1 = x(0), x2 = x(1), x3 = x(2), x4 = x(3);
+  const Fn f = square(x1) + square(x2) + 2.0 * square(x3) + square(x4) - 5.0 * x1 - 5.0 * x2 - 21.0 * x3 + 7.0 * x4;
+  const Fn g1 = square(x1) + square(x2) + square(x3) + square(x4) + x1 - x2 + x3 - x4 - 8.0;
+  const Fn g2 = square(x1) + 2.0 * square(x2) + square(x3) + 2.0 * square(x4) - x1 - x4 - 10.0;
+  const Fn g3 = 2.0 * square(x1) + square(x2) + square(x3) + 2.0 * x1 - x2 - x4 - 5.0;
+  const Fn c = (g1 <= 0.0) && (g2 <= 0.0) && (g3 <= 0.0);
+  const int u[] = {0, 1, 2, 3};
+  const Box box(4, Interval(-3, 3));
+  MinimizeOptions opt;
+  opt.epsilon = 1e-4;
+  opt.delta = 1e-4;
+  opt.limits.max_boxes = 100000;
+  const MinimizeResult r = minimize(f, c, u, box, opt);
+  EXPECT_EQ(r.report.limit, LimitHit::None) << r.report.boxes_processed;
+  ASSERT_TRUE(r.feasible_found);
+  EXPECT_TRUE(r.minimum.contains(-44.0)) << r.minimum;
+  EXPECT_LE(r.minimum.width(), opt.delta);
+  const double minimizer[] = {0.0, 1.0, 2.0, -1.0};
   EXPECT_TRUE(covered(r, minimizer));
 }
 

@@ -138,6 +138,31 @@ TEST(Queries, ClosestPointOnCurveAndSurface) {
   EXPECT_THROW(closest_point(circle(1.0), q), std::invalid_argument);
 }
 
+// Issue 10 (API): a miss is explicit (empty intervals, not t = [0, 0], which is a hit at the
+// origin), and closest_point says which parameter tolerance it used.
+TEST(Queries, RayMissIsExplicit) {
+  const RayHit miss = ray_hit(unit_sphere(), {2, 0, -5}, {0, 0, 1}, 10.0);
+  EXPECT_FALSE(miss.hit);
+  EXPECT_TRUE(miss.t.is_empty());
+  EXPECT_TRUE(miss.u.is_empty());
+  EXPECT_TRUE(miss.v.is_empty());
+  const Fn sphere = square(x(0)) + square(x(1)) + square(x(2)) - 1.0;
+  const RayHit implicit_miss = ray_hit_implicit(sphere, {0, 0, 2}, {1, 0, 0}, 10.0);
+  EXPECT_FALSE(implicit_miss.hit);
+  EXPECT_TRUE(implicit_miss.t.is_empty());
+  const RayHit hit = ray_hit(unit_sphere(), {0.3, 0.2, -5}, {0, 0, 1}, 10.0);
+  EXPECT_TRUE(hit.hit);
+  EXPECT_FALSE(hit.t.is_empty());
+}
+
+TEST(Queries, ClosestPointReportsItsTolerance) {
+  const double p[] = {3.0, 4.0};
+  EXPECT_EQ(closest_point(circle(1.0), p).epsilon, 1e-7);  // the default 1e-9 is raised
+  QueryOptions o;
+  o.epsilon = 1e-5;
+  EXPECT_EQ(closest_point(circle(1.0), p, {}, o).epsilon, 1e-5);
+}
+
 TEST(Queries, ClassifiesPointsAgainstAClosedSurface) {
   // Claim 24's points.
   const Classification in = classify_point(unit_sphere(), {0.1, 0.2, 0.3});

@@ -42,6 +42,18 @@ class CustomOp {
   // jumps), so that derivative-based inclusion forms (mean value, monotonicity) may be used
   // through the operator. The default is the safe answer.
   virtual bool continuous() const { return false; }
+  // The inclusion function and continuity on the box in one call: fills out / err as
+  // inclusion() does and returns true if the outputs are continuous on the box `args` (at its
+  // points where no error occurs). The interval evaluator calls this one, so that an operator
+  // continuous only under a condition its inclusion proves box by box (a root that is unique,
+  // an integrand that is continuous) can say so at no extra cost. It must return false
+  // wherever an output may jump: interval Newton and Krawczyk trust it. The default is
+  // inclusion(), then continuous().
+  virtual bool inclusion_continuous(std::span<const Interval> args, std::span<Interval> out,
+                                    std::span<std::uint8_t> err) const {
+    inclusion(args, out, err);
+    return continuous();
+  }
 };
 
 // Applies `op` to scalar argument functions; the result has op->num_outputs() components.

@@ -14,6 +14,10 @@
 //    piece and the boxes of the other arguments; no continuity needed). The result is
 //    widened by 4 tolerance * |hull of the limits| * max |F| so that it also holds the
 //    converged Romberg value.
+//  * continuity (CustomOp::inclusion_continuous): claimed on a box where the integrand's
+//    interval evaluation is continuous on every piece (no jump, no possible error): then the
+//    integral is continuous in the limits and the free coordinates, and interval Newton goes
+//    through it. An integrand that may jump (a step in a free coordinate) gives no claim.
 //  * derivative: the Leibniz rule: d/dl = -f(x_p := l), d/dh = f(x_p := h), and for the
 //    other coordinates the integral of the partial derivative (a new integral operator).
 //

@@ -88,7 +88,11 @@ enum class SolutionStatus : std::uint8_t {
   Possible,         // undecided, small: may hold solutions of an equality (0, 1 or more)
   Feasible,         // every point satisfies the constraint (an inner box)
   Boundary,         // undecided, small, only inequalities undecided: on a feasible region's edge
-  Unexplored,       // left on the work list when a limit stopped the search
+  // Left by a limit: on the work list when max_boxes or the time limit stopped the search, or
+  // not accepted (wider than epsilon) at max_depth, where it may not be split. Any status above
+  // means the box was decided or accepted; a box at machine precision that cannot be split is
+  // accepted as Possible / Boundary (that is the resolution of doubles, not a limit).
+  Unexplored,
 };
 std::string_view status_name(SolutionStatus s) noexcept;
 
@@ -124,8 +128,13 @@ struct SolveResult {
 
   // True when no limit was hit (every box was decided or accepted).
   bool complete() const noexcept { return report.limit == LimitHit::None; }
+  // Boxes with status s. Not the number of solutions: count(CertifiedUnique) counts boxes
+  // certified one by one, and a solution certified only through its component (Krawczyk on
+  // the component's hull, when Newton leaves boxes as wide as their Krawczyk image) sits in
+  // Possible boxes. The number of certified solutions is unique_components().
   std::size_t count(SolutionStatus s) const noexcept;
-  // Components certified to hold exactly one solution.
+  // Components certified to hold exactly one solution each (disjoint): the number of
+  // certified solutions.
   std::size_t unique_components() const noexcept;
 };
 

@@ -25,6 +25,14 @@
 // fail on domain x P (then every point of P is bracketed). Unbounded arguments give the domain
 // and kMaybeError.
 //
+// Continuity (CustomOp::inclusion_continuous), claimed on a box P only when F is continuous
+// on domain x P, no point of P can fail (above), and F has exactly one root in the domain for
+// every p in P: dF/dt excludes 0 there, or the solver's single component is certified
+// (Krawczyk) to hold exactly one root for every p. Then R is continuous on P (a limit of roots
+// R(p_k), p_k -> p, is a root at p, hence R(p)), so interval Newton and Krawczyk go through
+// the operator (a root of solve(eq(inverse(...), c)) is certified). With several roots the
+// point value (Brent's) may jump from one root to another: no claim.
+//
 // Derivative (implicit function theorem): with F(t, x) as above,
 //   dR/dx_i = -(dF/dx_i) / (dF/dt)   at t = R(x),
 // built symbolically with the operator itself substituted for t, so derivatives of any order

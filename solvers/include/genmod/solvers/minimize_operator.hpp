@@ -28,6 +28,10 @@
 // the hull of those boxes widened by epsilon, always with kMaybeError (a point value may fail
 // to be verified).
 //
+// Continuity: none is claimed (CustomOp's default). The minimizer jumps when another point
+// becomes the global minimizer, and the value shares the operator with it (one claim covers
+// all outputs of an operator); so Newton does not go through these operators.
+//
 // Derivatives (valid for interior minima, or where the constraints are inactive): the minimum
 // value by the envelope theorem, df*/dp = (df/dp)(x*(p), p); the minimizer point by the
 // implicit function theorem on grad_x f = 0, dx*/dp = -H_xx^{-1} H_xp (Cramer's rule, n <= 4;

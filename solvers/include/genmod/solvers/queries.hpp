@@ -61,8 +61,10 @@ CurveIntersections curve_self_intersections(const Fn& c, Interval domain = Inter
 
 struct RayHit {
   bool hit = false;         // a hit was found (certainly, if `certified`)
-  Interval t;               // ray parameter of the first hit: point = origin + t direction
-  Interval u, v;            // surface parameters (parametric surfaces only)
+  // Ray parameter of the first hit: point = origin + t direction. Empty on a miss ([0, 0]
+  // would be a hit at the origin).
+  Interval t = Interval::empty();
+  Interval u = Interval::empty(), v = Interval::empty();  // surface parameters (parametric surfaces only)
   bool certified = false;   // exactly one hit in the reported box, and no other hit before it
   bool complete = true;     // no search limit was hit
 };
@@ -98,6 +100,10 @@ struct ClosestPoint {
   std::vector<double> point;         // the shape at those parameters
   std::vector<Box> candidates;       // parameter boxes holding every closest point
   bool complete = true;
+  // The parameter tolerance used: max(options.epsilon, 1e-7). The squared distance is flat at
+  // its minimum (second order), so a finer box tolerance costs boxes without tightening the
+  // distance bracket; the value is reported rather than raised silently.
+  double epsilon = 0.0;
 };
 
 // Distance from p to a parametric curve or surface (dimension = p.size()).

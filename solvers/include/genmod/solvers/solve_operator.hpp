@@ -25,9 +25,16 @@
 // widened by epsilon and clipped to the domain. It holds every solution for every p in P, and
 // so every point value that lies within epsilon of a true solution (always, for a certified
 // component; for an uncertified one this is the solver's own epsilon promise). Errors: no box
-// at all -> empty + kCertainError; kNoError only when some returned box is certified
-// (CertifiedUnique or Feasible, which hold a solution for every parameter value) and the search
-// was complete; otherwise kMaybeError. Unbounded arguments give the domain and kMaybeError.
+// at all -> empty + kCertainError; kNoError only when some returned box or component is
+// certified (a CertifiedUnique or Feasible box, or a component certified unique, which hold a
+// solution for every parameter value) and the search was complete; otherwise kMaybeError.
+// Unbounded arguments give the domain and kMaybeError.
+//
+// Continuity (CustomOp::inclusion_continuous), claimed on a box P only for solve() (one
+// solution), a complete search and a single component certified (Krawczyk) to hold exactly one
+// solution for every p in P: then the solution map is continuous on P, so interval Newton and
+// Krawczyk go through a nested solve. With several solutions the first one may jump to
+// another; solve_all's count is a step function: no claim.
 //
 // Derivative (implicit function theorem, snyder.md section 3.3): when the top-level
 // conjunction of the constraint holds exactly n equalities h_i = 0 (inequalities are assumed
