@@ -1,0 +1,53 @@
+// Skeletal primitives and distance surfaces (Bloomenthal, research/bloomenthal.md §1.2, §2.2).
+//
+// A skeleton is a set of points, segments, polylines and triangles in R^3. The functions
+// below are plain kernel Fns of a point p (by default p = (x(0), x(1), x(2))), so the kernel
+// supplies point evaluation, a sound inclusion function (natural interval extension) and the
+// symbolic derivative. Distances are squared (eq. 5.7: no square root, smooth where the
+// unsquared distance is not).
+//
+// Distance surfaces follow genmod's implicit convention directly: f = d^2 / r^2 - 1 is
+// negative inside, zero on the surface (a sphere or capsule of radius r), positive outside.
+//
+//   Fn arm = distance_surface({distance2_to_segment({0, 0, 0}, {1, 0, 0})}, {0.1});
+#pragma once
+
+#include "genmod/kernel/fn.hpp"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace genmod {
+
+using Point3 = std::array<double, 3>;
+
+// The query point (x(0), x(1), x(2)).
+Fn skeleton_query_point();
+
+// |p - c|^2.
+Fn distance2_to_point(const Point3& c, const Fn& p = skeleton_query_point());
+// The unclamped projection parameter alpha = (p - a).(b - a) / |b - a|^2 (eq. 5.11): alpha
+// in [0, 1] when p projects into the segment. a != b (std::invalid_argument otherwise).
+Fn segment_parameter(const Point3& a, const Point3& b, const Fn& p = skeleton_query_point());
+// |p - q|^2 with q = a + clamp(alpha, 0, 1) (b - a), the nearest point of the segment.
+Fn distance2_to_segment(const Point3& a, const Point3& b, const Fn& p = skeleton_query_point());
+// Squared distance to the line through a and b, |(p - a) x (b - a)|^2 / |b - a|^2 (each
+// coordinate enters each cross product component once, so its interval is tight).
+Fn distance2_to_line(const Point3& a, const Point3& b, const Fn& p = skeleton_query_point());
+// Minimum over the consecutive segments of a polyline (at least two vertices).
+Fn distance2_to_polyline(std::span<const Point3> vertices, const Fn& p = skeleton_query_point());
+// Squared distance to the filled triangle abc: the distance to its plane where p projects
+// inside the triangle, else the nearest of its three edges. Non-degenerate triangles only.
+Fn distance2_to_triangle(const Point3& a, const Point3& b, const Point3& c, const Fn& p = skeleton_query_point());
+
+// Distance surface (eqs. 5.9, 5.10): min_i d2_i / r_i^2 - 1, the union of the elements'
+// spheres / capsules / slabs of radius r_i. One radius per squared distance, all > 0.
+Fn distance_surface(std::span<const Fn> distances2, std::span<const double> radii);
+Fn distance_surface(std::initializer_list<Fn> distances2, std::initializer_list<double> radii);
+// A tapered limb (§1.5): d^2 / r(alpha)^2 - 1 with r(alpha) = r1 + clamp(alpha, 0, 1)(r2 - r1),
+// the radius at the nearest point of the segment (the source's "Near.radius"). r1, r2 > 0.
+Fn tapered_segment_surface(const Point3& a, const Point3& b, double r1, double r2,
+                           const Fn& p = skeleton_query_point());
+
+}  // namespace genmod

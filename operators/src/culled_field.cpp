@@ -1,0 +1,128 @@
+// Superposition with per-box culling (culled_field.hpp).
+#include "genmod/operators/culled_field.hpp"
+
+#include "genmod/kernel/custom_op.hpp"
+#include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/kernel/tape.hpp"
+#include "genmod/operators/convolution.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace genmod {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+const int kXyz[3] = {0, 1, 2};
+
+// A lower bound of the squared distance between the box and the skeleton's bounding box.
+double box_distance2_below(const FieldElement& e, std::span<const Interval> box) {
+  Interval sum(0.0);
+  for (int i = 0; i < 3; ++i) {
+    const double s_lo = std::min(e.a[i], e.b[i]), s_hi = std::max(e.a[i], e.b[i]);
+    Interval gap(0.0);
+    if (box[i].lo() > s_hi) gap = Interval(box[i].lo()) - Interval(s_hi);
+    else if (box[i].hi() < s_lo) gap = Interval(s_lo) - Interval(box[i].hi());
+    sum = sum + square(Interval(std::max(gap.lo(), 0.0), std::max(gap.hi(), 0.0)));
+  }
+  return std::max(sum.lo(), 0.0);
+}
+
+class CulledFieldOp final : public CustomOp {
+ public:
+  CulledFieldOp(std::vector<FieldElement> elements, CulledFieldOptions options)
+      : elements_(std::move(elements)), options_(options) {
+    tapes_.reserve(elements_.size());
+    for (const FieldElement& e : elements_) tapes_.emplace_back(e.density, std::span<const int>(kXyz, 3));
+  }
+  std::string name() const override { return "culled_field"; }
+  int num_args() const override { return 3; }
+  int num_outputs() const override { return 1; }
+
+  void eval(std::span<const double> args, std::span<double> out) const override {
+    PointEvaluator pv;
+    double sum = 0;
+    for (const Tape& t : tapes_) sum += pv.eval(t, args)[0];
+    out[0] = sum;
+  }
+
+  void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override {
+    for (int i = 0; i < 3; ++i)
+      if (args[i].is_empty()) {
+        out[0] = Interval::empty();
+        return;
+      }
+    IntervalEvaluator iv;
+    Interval sum(0.0);
+    double remainder = 0;  // upper bound of the culled elements, summed upward
+    for (std::size_t k = 0; k < elements_.size(); ++k) {
+      const double bound = culled_element_bound(elements_[k], args);
+      if (bound <= options_.cull_below) {
+        remainder = (Interval(remainder) + Interval(bound)).hi();
+        continue;
+      }
+      const auto y = iv.eval(tapes_[k], args);
+      err[0] |= iv.errors()[0];
+      sum = sum + y[0];
+    }
+    out[0] = sum + Interval(0.0, remainder);
+  }
+
+  Fn derivative(std::span<const Fn> args, int k) const override {
+    const Fn p = cat({args[0], args[1], args[2]});
+    Fn d;
+    for (std::size_t e = 0; e < elements_.size(); ++e) {
+      const Fn de = compose_all(genmod::derivative(elements_[e].density, k), kXyz, p);
+      d = e == 0 ? de : d + de;
+    }
+    return d;
+  }
+  bool continuous() const override { return true; }
+
+ private:
+  std::vector<FieldElement> elements_;
+  CulledFieldOptions options_;
+  std::vector<Tape> tapes_;
+};
+
+void check_element(const FieldElement& e, std::size_t k) {
+  const std::string who = "culled_field: element " + std::to_string(k);
+  if (e.density.dim() != 1) throw std::invalid_argument(who + ": the density must be scalar");
+  if ((e.density.input_mask() & ~std::uint64_t{7}) != 0) throw std::invalid_argument(who + ": the density may depend on x(0), x(1), x(2) only");
+  for (int i = 0; i < 3; ++i)
+    if (!std::isfinite(e.a[i]) || !std::isfinite(e.b[i])) throw std::invalid_argument(who + ": skeleton coordinates must be finite");
+  if (!(e.radius > 0 && std::isfinite(e.radius))) throw std::invalid_argument(who + ": radius must be finite and > 0");
+  if (!(e.weight >= 0 && std::isfinite(e.weight))) throw std::invalid_argument(who + ": weight must be finite and >= 0");
+}
+
+}  // namespace
+
+double culled_element_bound(const FieldElement& e, std::span<const Interval> box) {
+  const double d2 = box_distance2_below(e, box);
+  if (e.falloff == Falloff::compact) return d2 >= e.radius * e.radius * (1 + 1e-12) ? 0.0 : kInf;
+  // weight * exp(-omega d2 / r^2), rounded upward: the exponent's upper bound.
+  const Interval exponent = -Interval(kGaussOmega) * Interval(d2) / square(Interval(e.radius));
+  // The relative margin covers the rounding of the element's own point evaluation (its value
+  // may exceed the exact bound by a few ulps where the box touches the nearest point).
+  return (Interval(e.weight) * exp(exponent) * Interval(1 + 1e-12)).hi() + std::numeric_limits<double>::denorm_min();
+}
+
+Fn culled_field(const std::vector<FieldElement>& elements, const CulledFieldOptions& options, const Fn& p) {
+  if (elements.empty()) throw std::invalid_argument("culled_field: no elements");
+  if (p.dim() != 3) throw std::invalid_argument("culled_field: the query point must have dimension 3");
+  if (!(options.cull_below >= 0)) throw std::invalid_argument("culled_field: cull_below must be >= 0");
+  for (std::size_t k = 0; k < elements.size(); ++k) check_element(elements[k], k);
+  auto op = std::make_shared<CulledFieldOp>(elements, options);
+  return apply_custom(std::shared_ptr<const CustomOp>(op), {p[0], p[1], p[2]});
+}
+
+Fn culled_field(const std::vector<FieldElement>& elements, const CulledFieldOptions& options) {
+  return culled_field(elements, options, skeleton_query_point());
+}
+
+}  // namespace genmod

@@ -1,0 +1,164 @@
+// Skeletal primitives, distance surfaces and blends (operators/skeletal.hpp, blends.hpp):
+// the shared property harness on each operator, over a domain that holds boxes far from,
+// near and straddling the skeleton, plus the claims of research/bloomenthal.md §11.
+#include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/operators/blends.hpp"
+#include "genmod/operators/convolution.hpp"
+#include "genmod/operators/skeletal.hpp"
+#include "operators/operator_properties.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace genmod {
+namespace {
+
+using testing::check_operator_properties;
+using testing::PropertySpec;
+
+// [-2, 2]^3 around skeletons inside [-1, 1]^3: random sub-boxes are far from, near and across
+// the elements.
+PropertySpec around_skeleton() {
+  PropertySpec spec;
+  spec.domain.assign(3, Interval(-2.0, 2.0));
+  spec.boxes = 300;
+  return spec;
+}
+
+double at(const Fn& f, double x, double y, double z) { return evaluate(f, std::vector<double>{x, y, z})[0]; }
+
+const Point3 kA = {-0.5, 0.25, 0.1}, kB = {0.75, -0.3, 0.4}, kC = {0.1, 0.8, -0.6};
+
+TEST(SkeletalProperties, PointSegmentLineDistances) {
+  check_operator_properties(distance2_to_point(kA), around_skeleton(), 1);
+  check_operator_properties(distance2_to_segment(kA, kB), around_skeleton(), 2);
+  check_operator_properties(distance2_to_line(kA, kB), around_skeleton(), 3);
+  check_operator_properties(segment_parameter(kA, kB), around_skeleton(), 4);
+}
+
+TEST(SkeletalProperties, PolylineTriangleDistances) {
+  const std::vector<Point3> poly = {kA, kB, kC, {0.9, 0.9, 0.9}};
+  PropertySpec spec = around_skeleton();
+  spec.derivative_tol = 1e-5;  // the min switches between segments; points near a switch are rare
+  check_operator_properties(distance2_to_polyline(poly), spec, 5);
+  check_operator_properties(distance2_to_triangle(kA, kB, kC), spec, 6);
+}
+
+TEST(SkeletalProperties, DistanceSurfacesAndTaper) {
+  check_operator_properties(distance_surface({distance2_to_segment(kA, kB), distance2_to_point(kC)}, {0.3, 0.2}),
+                            around_skeleton(), 7);
+  check_operator_properties(tapered_segment_surface(kA, kB, 0.3, 0.1), around_skeleton(), 8);
+}
+
+TEST(SkeletalProperties, Blends) {
+  const Fn a = distance_surface({distance2_to_segment(kA, kB)}, {0.3});
+  const Fn b = distance_surface({distance2_to_point(kC)}, {0.4});
+  check_operator_properties(average_blend({a, b}), around_skeleton(), 9);
+  check_operator_properties(range_blend({a, b}, {0.5, 0.7}, 2), around_skeleton(), 10);
+  check_operator_properties(range_blend({a, b}, {0.5, 0.7}, 3), around_skeleton(), 11);
+  PropertySpec rb = around_skeleton();
+  rb.derivative_tol = 1e-5;
+  check_operator_properties(rolling_ball_blend(a, b, 0.2), rb, 12);
+  const Fn p1 = decay(sqrt(distance2_to_segment(kA, kB)) * 2.0), p2 = gauss(sqrt(distance2_to_point(kC)) * 3.0);
+  check_operator_properties(product_blend(p1, p2), rb, 13);
+  const Fn c = 0.5 + 0.5 * sin(3.0 * x(0) + x(1));
+  check_operator_properties(convexity_blend(p1, p2, c), rb, 14);
+}
+
+TEST(SkeletalProperties, BadInputNamesTheOperator) {
+  testing::expect_throw_naming([] { distance2_to_segment(kA, kA); }, "distance2_to_segment");
+  testing::expect_throw_naming([] { distance2_to_triangle(kA, kB, kA); }, "distance2_to_triangle");
+  testing::expect_throw_naming([] { distance_surface({distance2_to_point(kA)}, {0.0}); }, "distance_surface");
+  testing::expect_throw_naming([] { range_blend({x(0)}, {1.0}, 1); }, "range_blend");
+  testing::expect_throw_naming([] { distance2_to_polyline(std::vector<Point3>{kA}); }, "distance2_to_polyline");
+}
+
+// Claim 23: the nearest point of eq. 5.11 equals brute-force sampling of the segment.
+TEST(BloomenthalClaims, Claim23NearestPointOnSegment) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> u(-2, 2);
+  const Fn d2 = distance2_to_segment(kA, kB), alpha = segment_parameter(kA, kB);
+  for (int i = 0; i < 200; ++i) {
+    const double px = u(rng), py = u(rng), pz = u(rng);
+    // brute force: golden-section refinement on a dense sample (convex in t)
+    double best = 1e300, best_t = 0;
+    for (int k = 0; k <= 20000; ++k) {
+      const double t = k / 20000.0;
+      const double qx = kA[0] + t * (kB[0] - kA[0]) - px, qy = kA[1] + t * (kB[1] - kA[1]) - py, qz = kA[2] + t * (kB[2] - kA[2]) - pz;
+      const double v = qx * qx + qy * qy + qz * qz;
+      if (v < best) best = v, best_t = t;
+    }
+    EXPECT_LE(std::sqrt(at(d2, px, py, pz)), std::sqrt(best) + 1e-9);
+    EXPECT_GE(std::sqrt(at(d2, px, py, pz)), std::sqrt(best) - 1e-6);  // the sampling's resolution
+    const double a = at(alpha, px, py, pz);  // unclamped
+    if (a > 0.001 && a < 0.999) EXPECT_NEAR(a, best_t, 1e-4);
+  }
+}
+
+// Claim 25 (distance-surface part): f = d^2/r^2 - 1 is < 0 inside, 0 on the capsule, and the
+// min over abutting collinear segments equals the single segment's field; the min field has
+// a crease at the concave bisector of an L while the convolution field is C^1 there.
+TEST(BloomenthalClaims, Claim25DistanceSurface) {
+  const double r = 0.2;
+  const Fn single = distance_surface({distance2_to_segment({0, 0, 0}, {1, 0, 0})}, {r});
+  const Fn split = distance_surface({distance2_to_segment({0, 0, 0}, {0.37, 0, 0}), distance2_to_segment({0.37, 0, 0}, {1, 0, 0})}, {r, r});
+  EXPECT_LT(at(single, 0.5, 0.1, 0), 0);
+  EXPECT_NEAR(at(single, 0.5, r, 0), 0, 1e-12);
+  EXPECT_NEAR(at(single, 1 + r, 0, 0), 0, 1e-12);
+  std::mt19937 rng(25);
+  std::uniform_real_distribution<double> u(-1, 2);
+  for (int i = 0; i < 500; ++i) {
+    const double px = u(rng), py = u(rng), pz = u(rng);
+    EXPECT_NEAR(at(single, px, py, pz), at(split, px, py, pz), 1e-12);
+  }
+  // L: (1,0,0)-(0,0,0)-(0,1,0); concave bisector plane x = y; p on it at (0.3, 0.3, 0.05).
+  const Fn lmin = distance_surface({distance2_to_segment({1, 0, 0}, {0, 0, 0}), distance2_to_segment({0, 0, 0}, {0, 1, 0})}, {r, r});
+  const Fn lconv = segment_convolution({1, 0, 0}, {0, 0, 0}, r) + segment_convolution({0, 0, 0}, {0, 1, 0}, r);
+  auto jump = [&](const Fn& f, double eps) {
+    const double n[3] = {std::sqrt(0.5), -std::sqrt(0.5), 0};
+    double s = 0;
+    for (int k = 0; k < 3; ++k) {
+      const Fn dk = derivative(f, k);
+      const double g1 = at(dk, 0.3 + eps * n[0], 0.3 + eps * n[1], 0.05), g2 = at(dk, 0.3 - eps * n[0], 0.3 - eps * n[1], 0.05);
+      s += (g1 - g2) * (g1 - g2);
+    }
+    return std::sqrt(s);
+  };
+  EXPECT_GT(jump(lmin, 1e-6), 1.0);  // a crease: the gradient jumps
+  EXPECT_GT(jump(lmin, 1e-8), 1.0);
+  const double c1 = jump(lconv, 1e-3), c2 = jump(lconv, 5e-4);
+  EXPECT_LT(c2, 0.6 * c1);  // C^1: halving eps about halves the difference
+  EXPECT_GT(c2, 0.4 * c1);
+}
+
+// Claim 26: the elliptic blend heels to primitive 1 beyond the range of primitive 2, and the
+// super-elliptic blend approaches the union as t grows.
+TEST(BloomenthalClaims, Claim26EllipticBlend) {
+  const Fn p1 = sqrt(distance2_to_point({0, 0, 0})) - 1.0;                    // unit sphere
+  const Fn p2 = sqrt(distance2_to_segment({0, 0, 0}, {2, 0, 0})) - 0.4;       // capsule
+  const double r1 = 0.5, r2 = 0.5;
+  const Fn b = range_blend({p1, p2}, {r1, r2}, 2);
+  // beyond the range of p2 (p2 >= r2): B = 1 - (1 - P1/r1)_+^2
+  for (double y : {1.0, 1.2, 1.5}) {
+    const double x0 = -0.7, z0 = 0.0;
+    ASSERT_GE(at(p2, x0, y, z0), r2);
+    const double v1 = at(p1, x0, y, z0);
+    const double expected = 1 - std::pow(std::max(0.0, 1 - v1 / r1), 2);
+    EXPECT_NEAR(at(b, x0, y, z0), expected, 1e-12);
+  }
+  // zero set heels to P1 = 0 there: at the sphere's surface point (-cos, sin) away from p2
+  const double s = std::sqrt(0.5);
+  EXPECT_NEAR(at(b, -s, s, 0), 0, 1e-12);
+  // t -> infinity: B -> union. At a point just outside both primitives near their join, the
+  // elliptic blend's fillet contains it (B < 0) while t = 32 leaves it outside, as the union.
+  ASSERT_GT(at(p1, 0.9, 0.45, 0), 0);
+  ASSERT_GT(at(p2, 0.9, 0.45, 0), 0);
+  EXPECT_LT(at(b, 0.9, 0.45, 0), 0);
+  EXPECT_GT(at(range_blend({p1, p2}, {r1, r2}, 32), 0.9, 0.45, 0), 0);
+}
+
+}  // namespace
+}  // namespace genmod
