@@ -1,6 +1,7 @@
 // The implicit gallery (implicit_gallery.hpp).
 #include "genmod/models/implicit_gallery.hpp"
 
+#include "genmod/models/starfish.hpp"
 #include "genmod/operators/shapes.hpp"
 
 #include <cmath>
@@ -53,6 +54,15 @@ Fn gyroid_sheet(const ParameterValues& p) {
   return implicit_gyroid(positive(p, "frequency"), positive(p, "thickness"));
 }
 
+// Bloomenthal's starfish joint (starfish.hpp): variant 0 = combination surface, 1 =
+// convolution (bulges at the joint), 2 = union of capsules (creases in the webbing).
+Fn starfish(const ParameterValues& p) {
+  const double v = p.at("variant");
+  if (!(v == 0 || v == 1 || v == 2))
+    throw std::invalid_argument("parameter 'variant' must be 0 (combination), 1 (convolution) or 2 (union), got " + std::to_string(v));
+  return starfish_implicit(static_cast<StarfishVariant>(static_cast<int>(v)));
+}
+
 }  // namespace
 
 const std::vector<ImplicitModel>& implicit_gallery() {
@@ -76,6 +86,10 @@ const std::vector<ImplicitModel>& implicit_gallery() {
       {"gyroid_sheet", "a gyroid sheet |g| < thickness clipped by the box",
        {{"frequency", 3.0, "gyroid frequency"}, {"thickness", 0.3, "half thickness in g"}}, gyroid_sheet,
        cube(1.0), 0.02},
+      {"starfish",
+       "Bloomenthal's starfish joint (Figs 5.71-5.73): five limbs of radius 0.1, combination of convolution and union",
+       {{"variant", 0.0, "0 = combination surface (JointValue), 1 = convolution, 2 = union of capsules"}},
+       starfish, {Interval(-0.65, 0.85), Interval(-0.55, 0.75), Interval(-0.3, 0.3)}, 0.025},
   };
   return models;
 }

@@ -127,4 +127,15 @@ Fn tapered_segment_surface(const Point3& a, const Point3& b, double r1, double r
   return distance2_to_segment(a, b, p) / square(r) - 1.0;
 }
 
+Fn ramiform_density(const SkeletonLimb& parent, std::span<const SkeletonLimb> children, const Fn& p) {
+  if (children.empty()) throw std::invalid_argument("ramiform_density: no children");
+  auto limb = [&](const SkeletonLimb& l) {
+    if (!(l.radius > 0 && std::isfinite(l.radius))) throw std::invalid_argument("ramiform_density: radii must be finite and > 0");
+    return (l.radius * l.radius) / distance2_to_segment(l.a, l.b, p);
+  };
+  Fn sum = limb(children[0]);
+  for (std::size_t i = 1; i < children.size(); ++i) sum = sum + limb(children[i]);
+  return max(limb(parent), sum);
+}
+
 }  // namespace genmod

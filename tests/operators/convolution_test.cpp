@@ -154,6 +154,68 @@ TEST(BloomenthalClaims, Claim04SegmentClosedFormIsTheConvolution) {
   }
 }
 
+// Claim 2: the appendix's Gauss table (10000 entries over [0, 10), trapezoid, linear
+// interpolation) against the exact CDF this library uses.
+TEST(BloomenthalClaims, Claim02TableCdfAgreesWithErf) {
+  const int size = 10000;
+  const double range = 10, scale = size / range;
+  std::vector<double> table(size);
+  const double step = 0.5 / (std::sqrt(std::numbers::pi / 0.69314715) * scale);
+  double v1 = 1;
+  table[0] = 0.5;
+  for (int i = 1; i < size; ++i) {
+    const double v2 = std::exp(-(i / scale) * (i / scale) * 0.69314715);
+    table[i] = table[i - 1] + step * (v1 + v2);
+    v1 = v2;
+  }
+  EXPECT_EQ(table[0], 0.5);
+  EXPECT_NEAR(table[size - 1], 1, 1e-9);
+  auto area_pos = [&](double x) {
+    const double sx = x * scale;
+    const int k = std::min(size - 1, static_cast<int>(std::floor(sx)));
+    double a = table[k];
+    if (k < size - 1) a += (sx - k) * (table[k + 1] - a);
+    return a;
+  };
+  auto area = [&](double x) { return x < 0 ? 1 - area_pos(-x) : area_pos(x); };
+  const Fn cdf = gauss_cdf(x(0));
+  double worst = 0;
+  for (double xv = -12; xv <= 12; xv += 0.001) worst = std::max(worst, std::abs(area(xv) - at1(cdf, xv)));
+  EXPECT_LT(worst, 1e-7);
+  std::printf("Gauss table vs erf: max difference %.3g\n", worst);
+}
+
+// Claim 5: the appendix's Subtend (distances from the projection to the ends, signs reversed
+// when the projection is outside) equals Phi((L - u)/r) - Phi(-u/r), the integration filter
+// of segment_convolution.
+TEST(BloomenthalClaims, Claim05SubtendSignLogic) {
+  const Point3 a = {0.1, -0.2, 0.3}, b = {0.9, 0.4, -0.1};
+  const double r = 0.25, len = std::sqrt(0.8 * 0.8 + 0.6 * 0.6 + 0.4 * 0.4);
+  const Fn d = segment_convolution(a, b, r), line2 = distance2_to_line(a, b);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.5, 2.5);
+  int before = 0, inside = 0, beyond = 0;
+  for (int i = 0; i < 600; ++i) {
+    const double p[3] = {u(rng), u(rng), u(rng)};
+    double alpha = 0;
+    for (int k = 0; k < 3; ++k) alpha += (p[k] - a[k]) * (b[k] - a[k]) / (len * len);
+    const double proj[3] = {a[0] + alpha * (b[0] - a[0]), a[1] + alpha * (b[1] - a[1]), a[2] + alpha * (b[2] - a[2])};
+    auto dist = [&](const Point3& e) {
+      return std::sqrt((proj[0] - e[0]) * (proj[0] - e[0]) + (proj[1] - e[1]) * (proj[1] - e[1]) + (proj[2] - e[2]) * (proj[2] - e[2]));
+    };
+    double e1d = -dist(a), e2d = dist(b);
+    if (alpha < 0) e1d = -e1d, ++before;
+    else if (alpha > 1) e2d = -e2d, ++beyond;
+    else ++inside;
+    const double subtend = std::abs(phi(e2d / r) - phi(e1d / r));
+    const double expected = subtend * std::exp(-kOmega * at(line2, p[0], p[1], p[2]) / (r * r));
+    EXPECT_NEAR(at(d, p[0], p[1], p[2]), expected, 1e-12);
+  }
+  EXPECT_GT(before, 50);
+  EXPECT_GT(inside, 50);
+  EXPECT_GT(beyond, 50);
+}
+
 TEST(BloomenthalClaims, Claim06Superposition) {
   const Point3 a = {-0.4, 0.1, 0.2}, b = {0.8, -0.5, 0.3};
   const Fn whole = segment_convolution(a, b, 0.2);

@@ -44,4 +44,12 @@ Fn decay(const Fn& x);
 // extension, so no interval of c is needed (its errors still propagate).
 Fn convexity_blend(const Fn& blend, const Fn& union_field, const Fn& convexity);
 
+// acos(c)^2 for c in [-1, 1] (error outside), with a derivative that is defined at c = 1.
+Fn acos_squared(const Fn& c);
+// The combination surface's convexity (§4.4): 1 - Ease(acos(|c|) / (pi/2)) of the cosine c of
+// the angle between the field's gradient and the joint-plane normal: 1 when they are parallel
+// (convex: take the union), 0 when perpendicular (concave: take the blend). Built on
+// acos_squared so that its gradient has no 0 * infinity where c = 1.
+Fn convexity_from_cosine(const Fn& cosine);
+
 }  // namespace genmod

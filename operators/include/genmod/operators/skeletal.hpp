@@ -50,4 +50,17 @@ Fn distance_surface(std::initializer_list<Fn> distances2, std::initializer_list<
 Fn tapered_segment_surface(const Point3& a, const Point3& b, double r1, double r2,
                            const Fn& p = skeleton_query_point());
 
+// A limb of a ramiform: the segment a -> b with radius r.
+struct SkeletonLimb {
+  Point3 a, b;
+  double radius;
+};
+// The ramiform density of eq. 5.36: max(f(parent), sum_i f(child_i)) with the distance
+// primitive f(limb) = r^2 / d(p, limb)^2 (a DENSITY: larger inside, the surface at 1; wrap
+// with density_to_implicit(D, 1.0)). With r_parent^2 = sum r_child^2 the two sides agree on
+// the parent's end plane, so the junction has no gap. Undefined (division by zero, flagged)
+// on the skeleton itself.
+Fn ramiform_density(const SkeletonLimb& parent, std::span<const SkeletonLimb> children,
+                    const Fn& p = skeleton_query_point());
+
 }  // namespace genmod
