@@ -9,6 +9,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -16,18 +17,31 @@ namespace {
 
 using namespace genmod;
 
-// A random tree of segments of length <= 0.17 in [-2, 2]^3, radius 0.03 .. 0.06.
+// A tree-like skeleton spread over [-2, 2]^3: a random walk of segments of length 0.05 with
+// direction persistence (reflected at the walls) that branches from a random earlier node
+// one time in ten; radius 0.02 .. 0.04.
 std::vector<FieldElement> tree(int n) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<Point3> nodes = {{0, 0, 0}};
+  Point3 dir = {1, 0, 0};
+  std::size_t from = 0;
   std::vector<FieldElement> es;
   for (int i = 0; i < n; ++i) {
-    const Point3 a = nodes[std::uniform_int_distribution<std::size_t>(0, nodes.size() - 1)(rng)];
-    const Point3 b = {std::clamp(a[0] + 0.1 * u(rng), -2.0, 2.0), std::clamp(a[1] + 0.1 * u(rng), -2.0, 2.0),
-                      std::clamp(a[2] + 0.1 * u(rng), -2.0, 2.0)};
+    if (std::uniform_int_distribution<int>(0, 9)(rng) == 0) from = std::uniform_int_distribution<std::size_t>(0, nodes.size() - 1)(rng);
+    double len = 0;
+    for (int k = 0; k < 3; ++k) dir[k] += 0.5 * u(rng), len += dir[k] * dir[k];
+    len = std::sqrt(len);
+    const Point3 a = nodes[from];
+    Point3 b;
+    for (int k = 0; k < 3; ++k) {
+      dir[k] /= len;
+      b[k] = a[k] + 0.05 * dir[k];
+      if (std::abs(b[k]) > 2) dir[k] = -dir[k], b[k] = a[k] + 0.05 * dir[k];
+    }
     nodes.push_back(b);
-    const double r = 0.03 + 0.03 * std::abs(u(rng));
+    from = nodes.size() - 1;
+    const double r = 0.02 + 0.01 * (1 + u(rng));
     es.push_back({segment_convolution(a, b, r), a, b, 1.0, r, Falloff::gaussian});
   }
   return es;

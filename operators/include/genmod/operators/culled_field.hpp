@@ -9,10 +9,13 @@
 //    sources of radius `radius` and for Gaussian segment convolutions with radius = the larger
 //    endpoint radius, spec §10.2), so a culled element contributes [0, that bound];
 //  * Falloff::compact: D_e = 0 when delta >= radius (the support), so it contributes [0, 0].
-// An element is culled when its bound is at most `cull_below`; the others are bounded by
-// their own (kernel) inclusion functions. The sum of all remainders keeps the result sound,
-// so a field of thousands of elements prunes per box at the cost of one box distance per
-// element. The derivative is the plain (unculled) sum of the elements' derivatives.
+// An element is culled when its bound is at most `cull_below` (precomputed as a distance per
+// element, so the test is one box distance in double arithmetic with a rounding margin) and
+// contributes [0, cull_below] (gaussian) or [0, 0] (compact); the others are bounded by their
+// own (kernel) inclusion functions. The sum of all remainders keeps the result sound, so a
+// field of thousands of elements prunes per box at the cost of one box distance per element
+// (a linear scan: no hierarchy yet). The derivative is the plain (unculled) sum of the
+// elements' derivatives.
 //
 //   std::vector<FieldElement> es;
 //   es.push_back({segment_convolution(a, b, r), a, b, 1.0, r, Falloff::gaussian});
