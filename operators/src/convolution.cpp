@@ -96,6 +96,10 @@ Fn wyvill_kernel_of_square(const Fn& s) {
   return select(s >= 1.0, 0.0, 1.0 - s * (22.0 - s * (17.0 - 4.0 * s)) * (1.0 / 9.0));
 }
 
+namespace {
+constexpr double kBsplineHalf = 0.72235;  // h_B(0.72235) = h_B(0)/2 (Fig. 5.54)
+}
+
 Fn bspline_kernel(const Fn& x) {
   const Fn t = abs(x);
   const Fn inner = (t * t * (3.0 * t - 6.0) + 4.0) * (1.0 / 6.0);
@@ -103,9 +107,6 @@ Fn bspline_kernel(const Fn& x) {
   return select(t >= 2.0, 0.0, select(t >= 1.0, outer, inner));
 }
 
-namespace {
-constexpr double kBsplineHalf = 0.72235;  // h_B(0.72235) = h_B(0)/2 (Fig. 5.54)
-}
 
 Fn normalized_kernel(Kernel kernel, const Fn& s2) {
   switch (kernel) {
@@ -129,6 +130,40 @@ Fn point_source(const Point3& c, double r, double w, Kernel kernel, const Fn& p)
   check_radius(r, "point_source");
   if (!(w >= 0 && std::isfinite(w))) throw std::invalid_argument("point_source: weight must be finite and >= 0");
   return w * normalized_kernel(kernel, distance2_to_point(c, p) * (1.0 / (r * r)));
+}
+
+Fn bspline_cdf(const Fn& x) {
+  // area from -2 to -|x| (times 24), then reflected for x > 0 (the kernel is even)
+  const Fn t = -abs(x);
+  const Fn t2 = square(t);
+  const Fn neg = select(t < -2.0, 0.0, select(t < -1.0, square(square(t + 2.0)), t * (16.0 - t2 * (8.0 + 3.0 * t)) + 12.0));
+  return select(x < 0.0, neg, 24.0 - neg) * (1.0 / 24.0);
+}
+
+Fn wyvill_cdf(const Fn& x) {
+  const Fn c = min(max(x, -1.0), 1.0);
+  const Fn c2 = square(c);
+  // F(c) = int_0^c h_wyv = c - c^3 (22/3 - c^2 (17/5 - (4/7) c^2)) / 9, odd; F(1) = kWyvillIntegral / 2
+  const Fn f = c - c * c2 * (22.0 / 3 - c2 * (17.0 / 5 - (4.0 / 7) * c2)) * (1.0 / 9.0);
+  return 0.5 + f * (1.0 / kWyvillIntegral);
+}
+
+Fn segment_convolution(const Point3& a, const Point3& b, double r1, double r2, Kernel kernel, const Fn& p) {
+  if (kernel == Kernel::gaussian) return segment_convolution(a, b, r1, r2, p);
+  check_radius(r1, "segment_convolution");
+  check_radius(r2, "segment_convolution");
+  const Point3 d = sub(b, a);
+  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(length > 0 && std::isfinite(length))) throw std::invalid_argument("segment_convolution: the segment's endpoints coincide or are not finite");
+  if (p.dim() != 3) throw std::invalid_argument("segment_convolution: the query point must have dimension 3");
+  const Point3 axis = {d[0] / length, d[1] / length, d[2] / length};
+  const Fn u = (p[0] - a[0]) * axis[0] + (p[1] - a[1]) * axis[1] + (p[2] - a[2]) * axis[2];
+  const Fn r = r1 == r2 ? Fn(r1) : r1 + min(max(u * (1.0 / length), 0.0), 1.0) * (r2 - r1);
+  const double scale = kernel == Kernel::bspline ? kBsplineHalf : 0.5;
+  const Fn s = scale / r;
+  auto cdf = [&](const Fn& v) { return kernel == Kernel::bspline ? bspline_cdf(v) : wyvill_cdf(v); };
+  const Fn subtend = max(cdf((length - u) * s) - cdf(-u * s), 0.0);
+  return subtend * normalized_kernel(kernel, distance2_to_line(a, b, p) / square(r));
 }
 
 Fn segment_convolution(const Point3& a, const Point3& b, double r1, double r2, const Fn& p) {

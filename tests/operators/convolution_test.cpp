@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <mpfr.h>
 
+#include <algorithm>
 #include <cfenv>
 #include <cmath>
 #include <functional>
@@ -321,6 +322,53 @@ TEST(BloomenthalClaims, Claim20BsplineKernel) {
     return sum;
   };
   for (double t : {-1.7, -1.0, -0.3, 0.4, 1.2, 1.9}) EXPECT_NEAR(area(t) / 24, quad(t), 1e-12) << t;
+}
+
+// Claims 19, 20 (the library's closed-form CDFs): against quadrature of the kernels.
+TEST(BloomenthalClaims, Claim19Claim20KernelCdfsMatchQuadrature) {
+  const Fn hb = bspline_kernel(x(0)), cb = bspline_cdf(x(0));
+  const Fn hw = wyvill_kernel_of_square(square(x(0))), cw = wyvill_cdf(x(0));
+  EXPECT_NEAR(at1(cb, 0), 0.5, 1e-15);
+  EXPECT_NEAR(at1(cb, 1), 0.9583333333333333, 1e-15);
+  EXPECT_EQ(at1(cb, -2.5), 0);
+  EXPECT_EQ(at1(cb, 2.5), 1);
+  for (double k : {-2.0, -1.0, 0.0, 1.0, 2.0}) EXPECT_NEAR(at1(cb, k - 1e-12), at1(cb, k + 1e-12), 1e-11);
+  for (double t : {-1.7, -1.0, -0.3, 0.4, 1.2, 1.9}) {
+    double q = 0;
+    for (double k = -2; k < t; k += 1) q += simpson([&](double v) { return at1(hb, v); }, k, std::min(k + 1, t), 1e-16);
+    EXPECT_NEAR(at1(cb, t), q, 1e-12) << t;
+  }
+  EXPECT_NEAR(kWyvillIntegral, 0.998941799, 1e-9);
+  EXPECT_NEAR(at1(cw, -1), 0, 1e-15);
+  EXPECT_NEAR(at1(cw, 1), 1, 1e-15);
+  EXPECT_NEAR(at1(cw, 0), 0.5, 1e-15);
+  for (double t : {-0.9, -0.5, 0.1, 0.6, 0.95})
+    EXPECT_NEAR(at1(cw, t), simpson([&](double v) { return at1(hw, v); }, -1, t, 1e-15) / kWyvillIntegral, 1e-9) << t;
+}
+
+// The B-spline and Wyvill segment convolutions: iso 1/2 at distance r along a long segment and
+// at the free endpoints; zero beyond sqrt(2) support.
+TEST(ConvolutionProperties, KernelSegmentConvolutions) {
+  for (Kernel k : {Kernel::bspline, Kernel::wyvill}) {
+    const double r = 0.1, len = 12 * r;
+    const Fn d = segment_convolution({0, 0, 0}, {len, 0, 0}, r, r, k);
+    EXPECT_NEAR(at(d, len / 2, r, 0), 0.5, 2e-6);
+    EXPECT_NEAR(at(d, 0, 0, 0), 0.5, 1e-12);
+    EXPECT_NEAR(at(d, len, 0, 0), 0.5, 1e-12);
+    const double support = kernel_support(k) * r;
+    EXPECT_EQ(at(d, len / 2, support * 1.001, 0), 0);
+    EXPECT_EQ(at(d, len + support * 1.001, 0, 0), 0);
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> ang(0, 2 * std::numbers::pi), t(-1, 2);
+    for (int i = 0; i < 200; ++i) {  // beyond sqrt(2) support of the segment: exactly 0
+      const double a = ang(rng), s = t(rng) * len;
+      const double axial = std::clamp(s, 0.0, len);
+      const double need = std::sqrt(2.0) * support * 1.001;
+      const double radial = std::sqrt(std::max(0.0, need * need - (s - axial) * (s - axial)));
+      EXPECT_EQ(at(d, s, radial * std::cos(a), radial * std::sin(a)), 0);
+    }
+    check_operator_properties(segment_convolution({-0.5, 0.2, 0.1}, {0.7, -0.4, 0.3}, 0.4, 0.25, k), around_skeleton(), 30 + static_cast<int>(k));
+  }
 }
 
 TEST(BloomenthalClaims, Claim21KernelNormalization) {

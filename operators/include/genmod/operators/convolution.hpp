@@ -53,6 +53,14 @@ Fn wyvill_kernel_of_square(const Fn& s);
 // The cubic B-spline kernel h_B(x) of §2.3.1 (support |x| < 2, h_B(0) = 2/3, unit integral).
 Fn bspline_kernel(const Fn& x);
 
+// The kernels' CDFs (the integration filters, unit total): the closed-form areas of §2.3.1 and
+// §2.3.2. bspline_cdf(x) = int_{-2}^{x} h_B; wyvill_cdf(x) = int_{-1}^{x} h_wyv / 0.998941799...
+// (normalized by the kernel's true integral, so it is continuous and reaches 1 at x = 1).
+Fn bspline_cdf(const Fn& x);
+Fn wyvill_cdf(const Fn& x);
+// The Wyvill kernel's integral over [-1, 1], 2 (1 - (4/7 - 17/5 + 22/3) / 9) = 0.998941799.
+inline constexpr double kWyvillIntegral = 2 * (1 - (4.0 / 7 - 17.0 / 5 + 22.0 / 3) / 9);
+
 // ---- point sources (§3.7) ---------------------------------------------------------------
 
 enum class Kernel {
@@ -80,6 +88,16 @@ Fn segment_convolution(const Point3& a, const Point3& b, double r1, double r2, c
 inline Fn segment_convolution(const Point3& a, const Point3& b, double r, const Fn& p = skeleton_query_point()) {
   return segment_convolution(a, b, r, r, p);
 }
+
+// The same product form (integration filter x distance filter, §3.5 (a)) with the B-spline or
+// Wyvill kernel normalized as in Fig. 5.54 (the Gaussian kernel gives the function above):
+// D = [C((L - u) s / r) - C(-u s / r)]_+ * h(d_perp / r), C the kernel's CDF, s its scale
+// (0.72235 for the B-spline, 1/2 for Wyvill), h = normalized_kernel. As for the Gaussian, D ->
+// h(d_perp/r) along a long segment (iso 1/2 at distance r) and D = 1/2 at free endpoints. It
+// vanishes where d_perp >= support or the axial excess beyond an end is >= support
+// (support = kernel_support(kernel) r), hence beyond sqrt(2) support of the segment.
+Fn segment_convolution(const Point3& a, const Point3& b, double r1, double r2, Kernel kernel,
+                       const Fn& p = skeleton_query_point());
 
 // ---- the density convention boundary ---------------------------------------------------
 
