@@ -40,6 +40,14 @@ double acos_ratio_value(double c) {
   return std::acos(c) / std::sqrt((1 - c) * (1 + c));
 }
 
+// The part of x inside [-1, 1] (empty if none); flags an error if x reaches outside.
+Interval in_domain(const Interval& x, std::uint8_t& err) {
+  if (x.is_empty()) return x;
+  if (x.hi() < -1 || x.lo() > 1) err |= kCertainError;
+  else if (x.lo() < -1 || x.hi() > 1) err |= kMaybeError;
+  return intersect(x, Interval(-1.0, 1.0));
+}
+
 class AcosRatioOp final : public CustomOp {
  public:
   std::string name() const override { return "acos_ratio"; }
@@ -47,12 +55,7 @@ class AcosRatioOp final : public CustomOp {
   int num_outputs() const override { return 1; }
   void eval(std::span<const double> a, std::span<double> out) const override { out[0] = acos_ratio_value(a[0]); }
   void inclusion(std::span<const Interval> a, std::span<Interval> out, std::span<std::uint8_t> err) const override {
-    if (a[0].is_empty()) {
-      out[0] = Interval::empty();
-      return;
-    }
-    if (a[0].lo() < -1 || a[0].hi() > 1) err[0] |= 1;
-    const Interval c = intersect(a[0], Interval(-1.0, 1.0));
+    const Interval c = in_domain(a[0], err[0]);
     if (c.is_empty()) {
       out[0] = Interval::empty();
       return;
@@ -90,19 +93,10 @@ class AcosSquaredOp final : public CustomOp {
     out[0] = th * th;
   }
   void inclusion(std::span<const Interval> a, std::span<Interval> out, std::span<std::uint8_t> err) const override {
-    if (a[0].is_empty()) {
-      out[0] = Interval::empty();
-      return;
-    }
-    if (a[0].lo() < -1 || a[0].hi() > 1) err[0] |= 1;
-    const Interval c = intersect(a[0], Interval(-1.0, 1.0));
-    if (c.is_empty()) {
-      out[0] = Interval::empty();
-      return;
-    }
-    std::uint8_t e = 0;
-    out[0] = square(acos(c, &e));  // acos is the kernel's outward enclosure
-    // The point value squares a rounded acos: within the enclosure's widening.
+    const Interval c = in_domain(a[0], err[0]);
+    // acos is the kernel's outward enclosure (a few ulps wider than the true range), so the
+    // point value, the square of a rounded acos, stays inside.
+    out[0] = c.is_empty() ? Interval::empty() : square(acos(c));
   }
   Fn derivative(std::span<const Fn> a, int) const override { return -2.0 * apply_custom(acos_ratio_op(), {a[0]}); }
   bool continuous() const override { return true; }

@@ -149,7 +149,6 @@ Fn wyvill_cdf(const Fn& x) {
 }
 
 Fn segment_convolution(const Point3& a, const Point3& b, double r1, double r2, Kernel kernel, const Fn& p) {
-  if (kernel == Kernel::gaussian) return segment_convolution(a, b, r1, r2, p);
   check_radius(r1, "segment_convolution");
   check_radius(r2, "segment_convolution");
   const Point3 d = sub(b, a);
@@ -159,29 +158,20 @@ Fn segment_convolution(const Point3& a, const Point3& b, double r1, double r2, K
   const Point3 axis = {d[0] / length, d[1] / length, d[2] / length};
   const Fn u = (p[0] - a[0]) * axis[0] + (p[1] - a[1]) * axis[1] + (p[2] - a[2]) * axis[2];
   const Fn r = r1 == r2 ? Fn(r1) : r1 + min(max(u * (1.0 / length), 0.0), 1.0) * (r2 - r1);
-  const double scale = kernel == Kernel::bspline ? kBsplineHalf : 0.5;
+  // The integration filter (the source's Subtend) is the kernel's CDF at the ends' normalized
+  // axial coordinates, non-negative since the CDF increases; the distance filter is the
+  // normalized kernel of the distance to the line.
+  const double scale = kernel == Kernel::bspline ? kBsplineHalf : kernel == Kernel::wyvill ? 0.5 : 1.0;
   const Fn s = scale / r;
-  auto cdf = [&](const Fn& v) { return kernel == Kernel::bspline ? bspline_cdf(v) : wyvill_cdf(v); };
+  auto cdf = [&](const Fn& v) {
+    return kernel == Kernel::gaussian ? gauss_cdf(v) : kernel == Kernel::bspline ? bspline_cdf(v) : wyvill_cdf(v);
+  };
   const Fn subtend = max(cdf((length - u) * s) - cdf(-u * s), 0.0);
   return subtend * normalized_kernel(kernel, distance2_to_line(a, b, p) / square(r));
 }
 
 Fn segment_convolution(const Point3& a, const Point3& b, double r1, double r2, const Fn& p) {
-  check_radius(r1, "segment_convolution");
-  check_radius(r2, "segment_convolution");
-  const Point3 d = sub(b, a);
-  const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-  if (!(length > 0 && std::isfinite(length))) throw std::invalid_argument("segment_convolution: the segment's endpoints coincide or are not finite");
-  if (p.dim() != 3) throw std::invalid_argument("segment_convolution: the query point must have dimension 3");
-  const Point3 axis = {d[0] / length, d[1] / length, d[2] / length};
-  const Fn u = (p[0] - a[0]) * axis[0] + (p[1] - a[1]) * axis[1] + (p[2] - a[2]) * axis[2];
-  const Fn r = r1 == r2 ? Fn(r1) : r1 + min(max(u * (1.0 / length), 0.0), 1.0) * (r2 - r1);
-  const Fn inv_r = 1.0 / r;
-  // Integration filter (the source's Subtend), non-negative: Phi is increasing.
-  const Fn subtend = max(gauss_cdf((length - u) * inv_r) - gauss_cdf(-u * inv_r), 0.0);
-  // Distance filter on the distance to the line.
-  const Fn distance = exp(-kGaussOmega * distance2_to_line(a, b, p) * square(inv_r));
-  return subtend * distance;
+  return segment_convolution(a, b, r1, r2, Kernel::gaussian, p);
 }
 
 Fn density_to_implicit(const Fn& density, double iso) {
