@@ -104,6 +104,26 @@ Fn rolling_ball_blend(const Fn& a, const Fn& b, double rho) {
   return max(rho, min(a, b)) - select(s > 0.0, sqrt(s), 0.0);
 }
 
+Fn grouped_blend(std::span<const Fn> densities, const std::vector<std::vector<int>>& blend_with, double iso) {
+  if (densities.empty()) throw std::invalid_argument("grouped_blend: no elements");
+  if (densities.size() != blend_with.size())
+    throw std::invalid_argument("grouped_blend: " + std::to_string(densities.size()) + " densities but " +
+                                std::to_string(blend_with.size()) + " blend sets");
+  if (!std::isfinite(iso)) throw std::invalid_argument("grouped_blend: iso-value must be finite");
+  Fn f;
+  for (std::size_t i = 0; i < densities.size(); ++i) {
+    check_scalar(densities[i], "grouped_blend");
+    Fn sum = densities[i];
+    for (int j : blend_with[i]) {
+      if (j < 0 || static_cast<std::size_t>(j) >= densities.size() || static_cast<std::size_t>(j) == i)
+        throw std::invalid_argument("grouped_blend: blend set " + std::to_string(i) + " names element " + std::to_string(j));
+      sum = sum + densities[static_cast<std::size_t>(j)];
+    }
+    f = i == 0 ? iso - sum : min(f, iso - sum);
+  }
+  return f;
+}
+
 Fn product_blend(const Fn& p1, const Fn& p2) {
   check_scalar(p1, "product_blend");
   check_scalar(p2, "product_blend");

@@ -96,6 +96,37 @@ TEST(SkeletalProperties, ConvexityMeasure) {
   EXPECT_EQ(iv.errors()[0], 0);
 }
 
+// Grouping (Fig. 6.18): limbs a..e with the blend sets a:{b,e}, b:{a,c,e}, c:{b}, d:{e}, e:{a,b,d}.
+TEST(SkeletalProperties, GroupedBlend) {
+  const std::vector<Fn> d = {segment_convolution({0, 0, 0}, {1, 0, 0}, 0.2), segment_convolution({1, 0, 0}, {1.5, 0.8, 0}, 0.2),
+                             segment_convolution({1.5, 0.8, 0}, {1.2, 1.2, 0}, 0.2), segment_convolution({0, 0.6, 0}, {-0.5, 1.2, 0}, 0.2),
+                             segment_convolution({0, 0, 0}, {0, 0.6, 0}, 0.2)};
+  const std::vector<std::vector<int>> sets = {{1, 4}, {0, 2, 4}, {1}, {4}, {0, 1, 3}};
+  const Fn grouped = grouped_blend(d, sets);
+  check_operator_properties(grouped, around_skeleton(), 17);
+  // all-in sets: plain superposition; empty sets: the union of isolated elements
+  std::vector<std::vector<int>> all(5), none(5);
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 5; ++j)
+      if (i != j) all[static_cast<std::size_t>(i)].push_back(j);
+  Fn sum = d[0], uni = 0.5 - d[0];
+  for (std::size_t i = 1; i < 5; ++i) sum = sum + d[i], uni = min(uni, 0.5 - d[i]);
+  std::mt19937 rng(18);
+  std::uniform_real_distribution<double> u(-1, 2);
+  for (int i = 0; i < 300; ++i) {
+    const double px = u(rng), py = u(rng), pz = u(rng) * 0.3;
+    EXPECT_NEAR(at(grouped_blend(d, all), px, py, pz), 0.5 - at(sum, px, py, pz), 1e-12);
+    EXPECT_EQ(at(grouped_blend(d, none), px, py, pz), at(uni, px, py, pz));
+    // grouping only removes blending: never more inside than plain superposition
+    EXPECT_GE(at(grouped, px, py, pz), 0.5 - at(sum, px, py, pz) - 1e-12);
+  }
+  // two parallel limbs 2.2 r apart: superposition fills the gap between them, grouping keeps it open
+  const std::vector<Fn> pair = {segment_convolution({-5, 0, 0}, {5, 0, 0}, 0.1), segment_convolution({-5, 0.22, 0}, {5, 0.22, 0}, 0.1)};
+  EXPECT_LT(at(grouped_blend(pair, {{1}, {0}}), 0, 0.11, 0), 0);  // blended: inside
+  EXPECT_GT(at(grouped_blend(pair, {{}, {}}), 0, 0.11, 0), 0);    // kept apart: outside
+  testing::expect_throw_naming([&] { grouped_blend(d, {{0}, {}, {}, {}, {}}); }, "grouped_blend");
+}
+
 TEST(SkeletalProperties, BadInputNamesTheOperator) {
   testing::expect_throw_naming([] { distance2_to_segment(kA, kA); }, "distance2_to_segment");
   testing::expect_throw_naming([] { distance2_to_triangle(kA, kB, kA); }, "distance2_to_triangle");

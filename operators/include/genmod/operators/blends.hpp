@@ -14,6 +14,7 @@
 
 #include <initializer_list>
 #include <span>
+#include <vector>
 
 namespace genmod {
 
@@ -43,6 +44,14 @@ Fn decay(const Fn& x);
 // the clamp on both sides). Its inclusion is hull(B, U) intersected with the natural
 // extension, so no interval of c is needed (its errors still propagate).
 Fn convexity_blend(const Fn& blend, const Fn& union_field, const Fn& convexity);
+
+// Grouping against unwanted blends (§6.7, Fig. 6.18): element i blends only with the elements
+// of blend_with[i]. The source gives no formula; this reconstruction takes each element's
+// density plus its blend set's, and the union of the results in genmod's convention:
+// f = min_i (iso - (D_i + sum_{j in blend_with[i]} D_j)). With every set holding all other
+// elements it is iso - sum D (plain superposition); with empty sets it is the union of the
+// isolated elements. Indices must be valid and not name the element itself.
+Fn grouped_blend(std::span<const Fn> densities, const std::vector<std::vector<int>>& blend_with, double iso = 0.5);
 
 // acos(c)^2 for c in [-1, 1] (error outside), with a derivative that is defined at c = 1.
 Fn acos_squared(const Fn& c);
