@@ -157,6 +157,71 @@ TEST(BloomenthalClaims, Claim23NearestPointOnSegment) {
   }
 }
 
+// Claim 24: the nearest point on a cubic by the quintic of eq. 5.8 is at least as near as the
+// best of 1e5 uniform samples (+1e-9), and the quintic is (1/2) d|C(t) - p|^2/dt.
+TEST(BloomenthalClaims, Claim24CubicDistance) {
+  const CubicCurve s_curve = {{0, -2, 0}, {0, 3, 0}, {1.6, -0.6, 0}, {-0.8, -0.1, 0}};  // the spec's S-curve
+  const CubicCurve space = {{1.5, -2, 0.7}, {-1, 3, -1.2}, {0.4, -0.6, 0.9}, {-0.3, 0.1, -0.2}};
+  std::mt19937 rng(24);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  for (const CubicCurve* c : {&s_curve, &space}) {
+    const Fn d2 = distance2_to_cubic(*c);
+    for (int i = 0; i < 60; ++i) {
+      const Point3 p = {u(rng), u(rng), u(rng) * (c == &s_curve ? 0.3 : 1.0)};
+      double best = 1e300;
+      for (int k = 0; k <= 100000; ++k) {
+        const Point3 q = c->at(k / 100000.0);
+        best = std::min(best, (q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]));
+      }
+      const double t = cubic_nearest_parameter(*c, p);
+      const Point3 q = c->at(t);
+      const double d = std::sqrt((q[0] - p[0]) * (q[0] - p[0]) + (q[1] - p[1]) * (q[1] - p[1]) + (q[2] - p[2]) * (q[2] - p[2]));
+      EXPECT_LE(d, std::sqrt(best) + 1e-9);
+      EXPECT_NEAR(std::sqrt(at(d2, p[0], p[1], p[2])), d, 1e-12);
+      // the quintic against a central difference of (1/2)|C(t) - p|^2 at random t
+      const std::array<double, 6> k = cubic_distance_quintic(*c, p);
+      const double tt = std::uniform_real_distribution<double>(0, 1)(rng), h = 1e-5;
+      auto half_d2 = [&](double s) {
+        const Point3 r = c->at(s);
+        return 0.5 * ((r[0] - p[0]) * (r[0] - p[0]) + (r[1] - p[1]) * (r[1] - p[1]) + (r[2] - p[2]) * (r[2] - p[2]));
+      };
+      double poly = 0;
+      for (double coef : k) poly = poly * tt + coef;
+      EXPECT_NEAR(poly, (half_d2(tt + h) - half_d2(tt - h)) / (2 * h), 1e-7);
+    }
+  }
+}
+
+TEST(SkeletalProperties, CubicDistance) {
+  const CubicCurve space = {{1.5, -2, 0.7}, {-1, 3, -1.2}, {0.4, -0.6, 0.9}, {-0.3, 0.1, -0.2}};
+  PropertySpec spec = around_skeleton();
+  spec.derivative_tol = 1e-5;
+  check_operator_properties(distance2_to_cubic(space), spec, 19);
+  // second derivatives (through the nearest parameter's implicit-function derivative) against
+  // differences of the first
+  const Fn d2 = distance2_to_cubic(space);
+  std::mt19937 rng(19);
+  std::uniform_real_distribution<double> u(-1.5, 1.5);
+  int checked = 0;
+  for (int i = 0; i < 40; ++i) {
+    const double p[3] = {u(rng), u(rng), u(rng)};
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        const Fn first = derivative(d2, a), second = derivative(first, b);
+        const double h = 1e-5;
+        double up[3] = {p[0], p[1], p[2]}, down[3] = {p[0], p[1], p[2]};
+        up[b] += h, down[b] -= h;
+        const double fd = (at(first, up[0], up[1], up[2]) - at(first, down[0], down[1], down[2])) / (2 * h);
+        const double sym = at(second, p[0], p[1], p[2]);
+        if (std::abs(fd) > 1e3) continue;  // a nearest-point jump between the samples
+        EXPECT_NEAR(sym, fd, 1e-4 * std::max(1.0, std::abs(fd)));
+        ++checked;
+      }
+  }
+  EXPECT_GT(checked, 300);
+  check_operator_properties(distance_surface({distance2_to_cubic({{0, -2, 0}, {0, 3, 0}, {1.6, -0.6, 0}, {-0.8, -0.1, 0}})}, {0.2}), spec, 20);
+}
+
 // Claim 25 (distance-surface part): f = d^2/r^2 - 1 is < 0 inside, 0 on the capsule, and the
 // min over abutting collinear segments equals the single segment's field; the min field has
 // a crease at the concave bisector of an L while the convolution field is C^1 there.

@@ -41,6 +41,25 @@ Fn distance2_to_polyline(std::span<const Point3> vertices, const Fn& p = skeleto
 // inside the triangle, else the nearest of its three edges. Non-degenerate triangles only.
 Fn distance2_to_triangle(const Point3& a, const Point3& b, const Point3& c, const Fn& p = skeleton_query_point());
 
+// A cubic curve C(t) = c1 t^3 + c2 t^2 + c3 t + c4, t in [0, 1] (§1.2, eq. 5.8).
+struct CubicCurve {
+  Point3 c1, c2, c3, c4;
+  Point3 at(double t) const;
+};
+// The coefficients (degree 5 down to 0) of the quintic (1/2) d/dt |C(t) - p|^2 of eq. 5.8.
+std::array<double, 6> cubic_distance_quintic(const CubicCurve& c, const Point3& p);
+// The parameter of the nearest point of the curve to p: the best of t = 0, t = 1 and the
+// quintic's roots in (0, 1) (bracketed on 256 intervals, refined by bisection).
+double cubic_nearest_parameter(const CubicCurve& c, const Point3& p);
+// min_t |p - C(t)|^2 as a custom operator. Point value: at the nearest parameter. Inclusion
+// over a box (sound): above, min over 33 curve points of the largest squared distance to a
+// box corner (the squared distance to a point is convex, so its maximum is at a corner);
+// below, the smallest squared distance from the box to boxes enclosing 32 pieces of the curve
+// (interval Taylor forms). Derivative: 2 (p - C(t*(p))) (the envelope theorem), with t*(p)
+// the nearest parameter as a custom operator whose derivative comes from the implicit
+// function theorem (and jumps where two nearest points tie, as the nearest point does).
+Fn distance2_to_cubic(const CubicCurve& c, const Fn& p = skeleton_query_point());
+
 // Distance surface (eqs. 5.9, 5.10): min_i d2_i / r_i^2 - 1, the union of the elements'
 // spheres / capsules / slabs of radius r_i. One radius per squared distance, all > 0.
 Fn distance_surface(std::span<const Fn> distances2, std::span<const double> radii);
