@@ -10,7 +10,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <array>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -63,7 +65,7 @@ class CulledFieldOp final : public CustomOp {
       // made a little larger (1e-9 relative) to absorb the rounding of this formula.
       double d2 = 0;
       if (e.falloff == Falloff::compact) d2 = e.radius * e.radius;
-      else if (options_.cull_below <= 0) d2 = kInf;
+      else if (e.falloff == Falloff::none || options_.cull_below <= 0) d2 = kInf;
       else if (e.weight > options_.cull_below) d2 = e.radius * e.radius * std::log(e.weight / options_.cull_below) / kGaussOmega;
       cull_distance2_.push_back(d2 * (1 + 1e-9));
       remainder_.push_back(e.falloff == Falloff::compact ? 0.0 : options_.cull_below);
@@ -73,10 +75,15 @@ class CulledFieldOp final : public CustomOp {
   int num_args() const override { return 3; }
   int num_outputs() const override { return 1; }
 
+  // The full sum; compact elements whose support cannot reach the point are exactly 0 there
+  // and are skipped (the same sum, faster).
   void eval(std::span<const double> args, std::span<double> out) const override {
     PointEvaluator pv;
     double sum = 0;
-    for (const Tape& t : tapes_) sum += pv.eval(t, args)[0];
+    for (std::size_t k = 0; k < tapes_.size(); ++k) {
+      if (elements_[k].falloff == Falloff::compact && point_distance2_below(k, args) >= cull_distance2_[k]) continue;
+      sum += pv.eval(tapes_[k], args)[0];
+    }
     out[0] = sum;
   }
 
@@ -106,14 +113,25 @@ class CulledFieldOp final : public CustomOp {
     out[0] = sum + Interval(0.0, remainder);
   }
 
+  // Another culled field, of the elements' partial derivatives: a compact element's derivative
+  // vanishes where the element does, so it is culled in the same way (remainder 0); the
+  // derivatives of Gaussian elements have no bound here and are never culled.
   Fn derivative(std::span<const Fn> args, int k) const override {
-    const Fn p = cat({args[0], args[1], args[2]});
-    Fn d;
-    for (std::size_t e = 0; e < elements_.size(); ++e) {
-      const Fn de = compose_all(genmod::derivative(elements_[e].density, k), kXyz, p);
-      d = e == 0 ? de : d + de;
+    std::shared_ptr<const CustomOp> d;
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      auto& slot = derivatives_[static_cast<std::size_t>(k)];
+      if (!slot) {
+        std::vector<FieldElement> es = elements_;
+        for (FieldElement& e : es) {
+          e.density = genmod::derivative(e.density, k);
+          if (e.falloff != Falloff::compact) e.falloff = Falloff::none;
+        }
+        slot = std::make_shared<CulledFieldOp>(std::move(es), options_);
+      }
+      d = slot;
     }
-    return d;
+    return apply_custom(d, args);
   }
   bool continuous() const override { return true; }
 
@@ -124,6 +142,13 @@ class CulledFieldOp final : public CustomOp {
   std::vector<Point3> skeleton_lo_, skeleton_hi_;  // the skeletons' bounding boxes
   std::vector<double> cull_distance2_;             // cull when the box is at least this far (squared)
   std::vector<double> remainder_;                  // what a culled element may still contribute
+  mutable std::mutex mutex_;
+  mutable std::array<std::shared_ptr<const CustomOp>, 3> derivatives_;  // built on first use
+
+  double point_distance2_below(std::size_t k, std::span<const double> p) const {
+    const Interval box[3] = {Interval(p[0]), Interval(p[1]), Interval(p[2])};
+    return fast_box_distance2_below(skeleton_lo_[k], skeleton_hi_[k], box);
+  }
 };
 
 void check_element(const FieldElement& e, std::size_t k) {
@@ -139,6 +164,7 @@ void check_element(const FieldElement& e, std::size_t k) {
 }  // namespace
 
 double culled_element_bound(const FieldElement& e, std::span<const Interval> box) {
+  if (e.falloff == Falloff::none) return kInf;
   const double d2 = box_distance2_below(e, box);
   if (e.falloff == Falloff::compact) return d2 >= e.radius * e.radius * (1 + 1e-12) ? 0.0 : kInf;
   // weight * exp(-omega d2 / r^2), rounded upward: the exponent's upper bound.

@@ -14,8 +14,9 @@
 // contributes [0, cull_below] (gaussian) or [0, 0] (compact); the others are bounded by their
 // own (kernel) inclusion functions. The sum of all remainders keeps the result sound, so a
 // field of thousands of elements prunes per box at the cost of one box distance per element
-// (a linear scan: no hierarchy yet). The derivative is the plain (unculled) sum of the
-// elements' derivatives.
+// (a linear scan: no hierarchy yet). Point evaluation skips compact elements whose support
+// cannot reach the point (they are exactly 0 there). The derivative is a culled field of the
+// elements' derivatives: compact ones culled as their elements, Gaussian ones never.
 //
 //   std::vector<FieldElement> es;
 //   es.push_back({segment_convolution(a, b, r), a, b, 1.0, r, Falloff::gaussian});
@@ -31,7 +32,8 @@
 
 namespace genmod {
 
-enum class Falloff { gaussian, compact };
+// gaussian and compact as above; none: never culled (any sign; e.g. a derivative).
+enum class Falloff { gaussian, compact, none };
 
 struct FieldElement {
   Fn density;       // D_e of (x(0), x(1), x(2)), >= 0
