@@ -5,6 +5,7 @@
 #include "genmod/kernel/tape.hpp"
 #include "genmod/operators/convolution.hpp"
 #include "genmod/operators/culled_field.hpp"
+#include "genmod/tessellate/implicit_mesher.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -20,7 +21,7 @@ using namespace genmod;
 // A tree-like skeleton spread over [-2, 2]^3: a random walk of segments of length 0.05 with
 // direction persistence (reflected at the walls) that branches from a random earlier node
 // one time in ten; radius 0.02 .. 0.04.
-std::vector<FieldElement> tree(int n) {
+std::vector<FieldElement> tree(int n, Kernel kernel = Kernel::gaussian) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<Point3> nodes = {{0, 0, 0}};
@@ -42,7 +43,8 @@ std::vector<FieldElement> tree(int n) {
     nodes.push_back(b);
     from = nodes.size() - 1;
     const double r = 0.02 + 0.01 * (1 + u(rng));
-    es.push_back({segment_convolution(a, b, r), a, b, 1.0, r, Falloff::gaussian});
+    if (kernel == Kernel::gaussian) es.push_back({segment_convolution(a, b, r), a, b, 1.0, r, Falloff::gaussian});
+    else es.push_back({segment_convolution(a, b, r, r, kernel), a, b, 1.0, std::sqrt(2.0) * kernel_support(kernel) * r, Falloff::compact});
   }
   return es;
 }
@@ -85,5 +87,29 @@ void BM_CulledFieldInclusion(benchmark::State& state) { run(state, true); }
 void BM_PlainSumInclusion(benchmark::State& state) { run(state, false); }
 BENCHMARK(BM_CulledFieldInclusion)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_PlainSumInclusion)->Arg(1000)->Arg(10000)->Unit(benchmark::kMicrosecond);
+
+// Meshing a field of N Wyvill segment convolutions (compact support: culled in values,
+// inclusions and derivatives) against the same mesher on the plain sum's tape, at equal cell
+// size (min_feature 0.02 in [-2.2, 2.2]^3).
+void mesh(benchmark::State& state, bool culled) {
+  const std::vector<FieldElement> es = tree(static_cast<int>(state.range(0)), Kernel::wyvill);
+  Fn d;
+  if (culled) {
+    d = culled_field(es);
+  } else {
+    d = es[0].density;
+    for (std::size_t i = 1; i < es.size(); ++i) d = d + es[i].density;
+  }
+  const Fn f = density_to_implicit(d);
+  const Box3 box = {Interval(-2.2, 2.2), Interval(-2.2, 2.2), Interval(-2.2, 2.2)};
+  std::size_t triangles = 0;
+  for (auto _ : state) triangles = mesh_implicit(f, box, {.min_feature = 0.02}).mesh.triangles.size();
+  state.counters["triangles"] = static_cast<double>(triangles);
+}
+
+void BM_MeshCulledField(benchmark::State& state) { mesh(state, true); }
+void BM_MeshPlainSum(benchmark::State& state) { mesh(state, false); }
+BENCHMARK(BM_MeshCulledField)->Arg(1000)->Arg(10000)->Iterations(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MeshPlainSum)->Arg(1000)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "genmod/operators/convolution.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <array>
@@ -49,6 +50,84 @@ double fast_box_distance2_below(const Point3& s_lo, const Point3& s_hi, std::spa
   return sum * (1 - 1e-12);
 }
 
+// A uniform grid over the elements' reach (skeleton bounding box grown by the cull distance):
+// each cell lists the elements whose reach overlaps it. An element whose reach shares no cell
+// with a box does not overlap it, so the box is beyond its cull distance. Elements with an
+// infinite reach (never culled) are listed apart.
+class ElementGrid {
+ public:
+  void build(const std::vector<Point3>& lo, const std::vector<Point3>& hi, const std::vector<double>& reach) {
+    const std::size_t n = lo.size();
+    Point3 glo = {kInf, kInf, kInf}, ghi = {-kInf, -kInf, -kInf};
+    double extent = 0;
+    std::size_t finite = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!std::isfinite(reach[k])) {
+        always_.push_back(static_cast<std::uint32_t>(k));
+        continue;
+      }
+      ++finite;
+      for (int i = 0; i < 3; ++i) {
+        glo[i] = std::min(glo[i], lo[k][i] - reach[k]);
+        ghi[i] = std::max(ghi[i], hi[k][i] + reach[k]);
+        extent = std::max(extent, hi[k][i] - lo[k][i] + 2 * reach[k]);
+      }
+    }
+    if (finite == 0) return;
+    origin_ = glo;
+    // Cells about the size of the largest reach, at most 64 per axis.
+    for (int i = 0; i < 3; ++i) {
+      const double span = std::max(ghi[i] - glo[i], 1e-300);
+      dims_[i] = std::clamp(static_cast<int>(span / std::max(extent, 1e-300)), 1, 64);
+      inv_cell_[i] = dims_[i] / span;
+    }
+    cells_.assign(static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2], {});
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!std::isfinite(reach[k])) continue;
+      int c0[3], c1[3];
+      for (int i = 0; i < 3; ++i) c0[i] = cell(i, lo[k][i] - reach[k]), c1[i] = cell(i, hi[k][i] + reach[k]);
+      for (int z = c0[2]; z <= c1[2]; ++z)
+        for (int y = c0[1]; y <= c1[1]; ++y)
+          for (int x = c0[0]; x <= c1[0]; ++x) cells_[index(x, y, z)].push_back(static_cast<std::uint32_t>(k));
+    }
+  }
+
+  // The elements that may reach the box (sorted, no repeats), into `out`.
+  void candidates(std::span<const Interval> box, std::vector<std::uint32_t>& out) const {
+    out.assign(always_.begin(), always_.end());
+    if (cells_.empty()) return;
+    int c0[3], c1[3];
+    for (int i = 0; i < 3; ++i) {
+      c0[i] = cell(i, box[i].lo());
+      c1[i] = cell(i, box[i].hi());
+      // a box wholly outside the grid on one side reaches nothing in it
+      if (box[i].hi() < origin_[i] || (box[i].lo() - origin_[i]) * inv_cell_[i] >= dims_[i]) return;
+    }
+    for (int z = c0[2]; z <= c1[2]; ++z)
+      for (int y = c0[1]; y <= c1[1]; ++y)
+        for (int x = c0[0]; x <= c1[0]; ++x) {
+          const auto& list = cells_[index(x, y, z)];
+          out.insert(out.end(), list.begin(), list.end());
+        }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+  }
+
+ private:
+  int cell(int i, double v) const {
+    const double c = std::floor((v - origin_[i]) * inv_cell_[i]);
+    return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(dims_[i] - 1)));
+  }
+  std::size_t index(int x, int y, int z) const {
+    return (static_cast<std::size_t>(z) * dims_[1] + static_cast<std::size_t>(y)) * dims_[0] + static_cast<std::size_t>(x);
+  }
+  Point3 origin_ = {0, 0, 0};
+  double inv_cell_[3] = {1, 1, 1};
+  int dims_[3] = {1, 1, 1};
+  std::vector<std::vector<std::uint32_t>> cells_;
+  std::vector<std::uint32_t> always_;
+};
+
 class CulledFieldOp final : public CustomOp {
  public:
   CulledFieldOp(std::vector<FieldElement> elements, CulledFieldOptions options)
@@ -68,8 +147,13 @@ class CulledFieldOp final : public CustomOp {
       else if (e.falloff == Falloff::none || options_.cull_below <= 0) d2 = kInf;
       else if (e.weight > options_.cull_below) d2 = e.radius * e.radius * std::log(e.weight / options_.cull_below) / kGaussOmega;
       cull_distance2_.push_back(d2 * (1 + 1e-9));
-      remainder_.push_back(e.falloff == Falloff::compact ? 0.0 : options_.cull_below);
+      if (e.falloff == Falloff::gaussian) ++gaussian_count_;
     }
+    // Reach: the cull distance, grown by 1e-6 relative (far above the rounding of the grid's
+    // cell arithmetic) so that overlap in reals implies a shared cell.
+    std::vector<double> reach;
+    for (double d2 : cull_distance2_) reach.push_back(std::isfinite(d2) ? std::sqrt(d2) * (1 + 1e-6) + 1e-300 : kInf);
+    grid_.build(skeleton_lo_, skeleton_hi_, reach);
   }
   std::string name() const override { return "culled_field"; }
   int num_args() const override { return 3; }
@@ -78,10 +162,22 @@ class CulledFieldOp final : public CustomOp {
   // The full sum; compact elements whose support cannot reach the point are exactly 0 there
   // and are skipped (the same sum, faster).
   void eval(std::span<const double> args, std::span<double> out) const override {
+    if (std::isnan(args[0] + args[1] + args[2])) {
+      out[0] = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    const Interval point[3] = {Interval(args[0]), Interval(args[1]), Interval(args[2])};
+    std::vector<std::uint32_t> near;
+    grid_.candidates(point, near);
     PointEvaluator pv;
     double sum = 0;
+    // In index order (so the sum rounds as the plain sum does): every non-compact element, and
+    // the compact ones that may reach the point.
+    std::size_t next = 0;
     for (std::size_t k = 0; k < tapes_.size(); ++k) {
-      if (elements_[k].falloff == Falloff::compact && point_distance2_below(k, args) >= cull_distance2_[k]) continue;
+      while (next < near.size() && near[next] < k) ++next;
+      const bool listed = next < near.size() && near[next] == k;
+      if (elements_[k].falloff == Falloff::compact && (!listed || point_distance2_below(k, args) >= cull_distance2_[k])) continue;
       sum += pv.eval(tapes_[k], args)[0];
     }
     out[0] = sum;
@@ -93,23 +189,22 @@ class CulledFieldOp final : public CustomOp {
         out[0] = Interval::empty();
         return;
       }
+    std::vector<std::uint32_t> near;
+    grid_.candidates(args, near);
     IntervalEvaluator iv;
     Interval sum(0.0);
-    double remainder = 0;  // bound of the culled elements: cull_below each (0 for compact support)
-    std::size_t culled = 0;
-    for (std::size_t k = 0; k < elements_.size(); ++k) {
-      if (fast_box_distance2_below(skeleton_lo_[k], skeleton_hi_[k], args) >= cull_distance2_[k]) {
-        remainder += remainder_[k];
-        ++culled;
-        continue;
-      }
+    std::size_t gaussian_evaluated = 0;
+    for (std::uint32_t k : near) {
+      if (fast_box_distance2_below(skeleton_lo_[k], skeleton_hi_[k], args) >= cull_distance2_[k]) continue;
       const auto y = iv.eval(tapes_[k], args);
       err[0] |= iv.errors()[0];
       sum = sum + y[0];
+      gaussian_evaluated += elements_[k].falloff == Falloff::gaussian;
     }
-    // n additions of the same nonnegative value: widen by n ulps' worth (relative 1e-12 covers
-    // n < 4e3 ulps of relative error, and culled counts are far below 2^40).
-    remainder = remainder * (1 + 1e-12 * static_cast<double>(std::max<std::size_t>(culled, 1))) + std::numeric_limits<double>::denorm_min();
+    // Every culled Gaussian element contributes at most cull_below (compact ones 0): the
+    // count is exact, the product rounded up.
+    const double culled = static_cast<double>(gaussian_count_ - gaussian_evaluated);
+    const double remainder = (Interval(culled) * Interval(options_.cull_below)).hi();
     out[0] = sum + Interval(0.0, remainder);
   }
 
@@ -141,7 +236,8 @@ class CulledFieldOp final : public CustomOp {
   std::vector<Tape> tapes_;
   std::vector<Point3> skeleton_lo_, skeleton_hi_;  // the skeletons' bounding boxes
   std::vector<double> cull_distance2_;             // cull when the box is at least this far (squared)
-  std::vector<double> remainder_;                  // what a culled element may still contribute
+  std::size_t gaussian_count_ = 0;                 // culled ones add cull_below each
+  ElementGrid grid_;
   mutable std::mutex mutex_;
   mutable std::array<std::shared_ptr<const CustomOp>, 3> derivatives_;  // built on first use
 
