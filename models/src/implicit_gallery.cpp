@@ -1,6 +1,8 @@
 // The implicit gallery (implicit_gallery.hpp).
 #include "genmod/models/implicit_gallery.hpp"
 
+#include "genmod/models/starfish.hpp"
+#include "genmod/operators/convolution.hpp"
 #include "genmod/operators/shapes.hpp"
 
 #include <cmath>
@@ -53,6 +55,27 @@ Fn gyroid_sheet(const ParameterValues& p) {
   return implicit_gyroid(positive(p, "frequency"), positive(p, "thickness"));
 }
 
+// Bloomenthal's starfish joint (starfish.hpp): variant 0 = combination surface, 1 =
+// convolution (bulges at the joint), 2 = union of capsules (creases in the webbing).
+Fn starfish(const ParameterValues& p) {
+  const double v = p.at("variant");
+  if (!(v == 0 || v == 1 || v == 2))
+    throw std::invalid_argument("parameter 'variant' must be 0 (combination), 1 (convolution) or 2 (union), got " + std::to_string(v));
+  return starfish_implicit(static_cast<StarfishVariant>(static_cast<int>(v)));
+}
+
+// Bloomenthal's tee (Figs 5.62-5.67): Gaussian convolution of a crossbar (0,-1,0)-(0,1,0) and
+// a stem along +x to (1.5,0,0), both of radius r; the stem starts at the origin (bulge at the
+// junction: D(0,0,r) = 3/4) or, with shorten = 1, at (r,0,0) (D(r,0,r) = 1/2: "a small bulge
+// and a small dip").
+Fn tee(const ParameterValues& p) {
+  const double r = positive(p, "radius"), shorten = p.at("shorten");
+  if (!(shorten == 0 || shorten == 1)) throw std::invalid_argument("parameter 'shorten' must be 0 or 1, got " + std::to_string(shorten));
+  if (!(r < 0.5)) throw std::invalid_argument("parameter 'radius' must be < 0.5, got " + std::to_string(r));
+  const Fn d = segment_convolution({0, -1, 0}, {0, 1, 0}, r) + segment_convolution({shorten * r, 0, 0}, {1.5, 0, 0}, r);
+  return density_to_implicit(d);
+}
+
 }  // namespace
 
 const std::vector<ImplicitModel>& implicit_gallery() {
@@ -76,6 +99,14 @@ const std::vector<ImplicitModel>& implicit_gallery() {
       {"gyroid_sheet", "a gyroid sheet |g| < thickness clipped by the box",
        {{"frequency", 3.0, "gyroid frequency"}, {"thickness", 0.3, "half thickness in g"}}, gyroid_sheet,
        cube(1.0), 0.02},
+      {"starfish",
+       "Bloomenthal's starfish joint (Figs 5.71-5.73): five limbs of radius 0.1, combination of convolution and union",
+       {{"variant", 0.0, "0 = combination surface (JointValue), 1 = convolution, 2 = union of capsules"}},
+       starfish, {Interval(-0.65, 0.85), Interval(-0.55, 0.75), Interval(-0.3, 0.3)}, 0.025},
+      {"tee", "Bloomenthal's convolution tee (Figs 5.62-5.67): crossbar and stem of radius r; bulge, or shortened stem",
+       {{"radius", 0.2, "radius of both segments (< 0.5)"},
+        {"shorten", 0.0, "1: the stem starts at (r, 0, 0) instead of the junction (removes most of the bulge)"}},
+       tee, {Interval(-0.7, 1.9), Interval(-1.4, 1.4), Interval(-0.7, 0.7)}, 0.05},
   };
   return models;
 }

@@ -14,7 +14,7 @@ namespace genmod::models {
 namespace {
 
 TEST(ImplicitGallery, EveryModelMeshesValid) {
-  ASSERT_EQ(implicit_gallery().size(), 5u);
+  ASSERT_EQ(implicit_gallery().size(), 7u);
   for (const ImplicitModel& m : implicit_gallery()) {
     SCOPED_TRACE(m.name);
     const ImplicitMesh mesh = mesh_implicit(build_implicit_model(m), m.box, {.min_feature = 2 * m.min_feature});
@@ -26,6 +26,10 @@ TEST(ImplicitGallery, EveryModelMeshesValid) {
     }
     if (m.name == "drilled_block") {
       EXPECT_EQ(v.euler_characteristic, 0);
+    }
+    if (m.name == "starfish" || m.name == "tee") {
+      EXPECT_EQ(v.components, 1u);
+      EXPECT_EQ(v.euler_characteristic, 2);
     }
     if (m.name == "blobby") {
       EXPECT_EQ(v.components, 4u);

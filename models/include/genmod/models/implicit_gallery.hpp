@@ -28,7 +28,7 @@ struct ImplicitModel {
 
 // All implicit models, in a fixed order: sphere_gyroid (libfive's meshing benchmark shape),
 // tanglecube, drilled_block (CSG with sharp edges), blobby (four blended spheres, claim 40 of
-// the thesis), gyroid_sheet.
+// the thesis), gyroid_sheet, starfish (Bloomenthal's joint, starfish.hpp), tee (Bloomenthal's convolution tee).
 const std::vector<ImplicitModel>& implicit_gallery();
 // nullptr when there is no implicit model of that name.
 const ImplicitModel* find_implicit_model(const std::string& name);

@@ -1,7 +1,10 @@
 // The public API of the operators layer: GENMOD's operator library on the kernel.
 #pragma once
 
+#include "genmod/operators/blends.hpp"
 #include "genmod/operators/branching.hpp"
+#include "genmod/operators/convolution.hpp"
+#include "genmod/operators/culled_field.hpp"
 #include "genmod/operators/curve.hpp"
 #include "genmod/operators/curve_file.hpp"
 #include "genmod/operators/higher_order.hpp"
@@ -10,6 +13,7 @@
 #include "genmod/operators/offset.hpp"
 #include "genmod/operators/path.hpp"
 #include "genmod/operators/shapes.hpp"
+#include "genmod/operators/skeletal.hpp"
 #include "genmod/operators/sweep.hpp"
 #include "genmod/operators/table.hpp"
 #include "genmod/operators/transform.hpp"
