@@ -157,6 +157,12 @@ elseif(CASE STREQUAL "preview_and_check")
   if(at EQUAL -1)
     message(FATAL_ERROR "genmod check tangle.ply: not reported valid:\n${out}")
   endif()
+  # Against its surface (the gallery's tanglecube is the same function): every vertex certified.
+  expect_ok(check ${WORK}/tangle.ply --surface tanglecube)
+  if(NOT out MATCHES "distance to the surface .*all certified")
+    message(FATAL_ERROR "genmod check --surface: no certified distance:\n${out}")
+  endif()
+  expect_error(ARGS check ${WORK}/tangle.ply --surface ${WORK}/missing.vm NEEDLES "missing.vm")
   # A tetrahedron without its bottom face: three boundary edges.
   file(WRITE ${WORK}/hole.obj "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 4\nf 2 3 4\nf 3 1 4\n")
   run(status out check ${WORK}/hole.obj)
