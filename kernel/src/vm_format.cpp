@@ -1,11 +1,12 @@
 #include "genmod/kernel/vm_format.hpp"
 
 #include "genmod/kernel/custom_op.hpp"
+#include "genmod/kernel/number_text.hpp"
 
-#include <cerrno>
 #include <cstdlib>
 #include <fstream>
-#include <iomanip>
+#include <optional>
+#include <locale>
 #include <sstream>
 #include <unordered_map>
 #include <vector>
@@ -23,6 +24,15 @@ Op parse_op(const std::string& word, bool* found) {
   }
   *found = false;
   return Op::Const;
+}
+
+// 'word', with control bytes escaped (built by appending: GCC 12 warns falsely about
+// const char* + std::string&&).
+std::string quoted(std::string_view word) {
+  std::string s(1, '\'');
+  s += printable(word);
+  s += '\'';
+  return s;
 }
 
 std::string vm_name(Op op) { return op == Op::Log ? "ln" : std::string(op_name(op)); }
@@ -45,8 +55,8 @@ Fn read_vm(std::istream& in, const std::string& source_name) {
     for (std::string s; words >> s;) w.push_back(s);
     if (w.empty()) continue;
     auto fail = [&](const std::string& problem) { throw VmFormatError(source_name, line_no, problem); };
-    if (w.size() < 2) fail("expected 'NAME OPCODE ARGS...', got '" + w[0] + "'");
-    if (names.count(w[0])) fail("'" + w[0] + "' is defined twice");
+    if (w.size() < 2) fail("expected 'NAME OPCODE ARGS...', got " + quoted(w[0]));
+    if (names.count(w[0])) fail(quoted(w[0]) + " is defined twice");
     const std::string& opword = w[1];
     const std::size_t nargs = w.size() - 2;
     auto want = [&](std::size_t n) {
@@ -55,18 +65,15 @@ Fn read_vm(std::istream& in, const std::string& source_name) {
     };
     auto operand = [&](std::size_t k) {
       auto it = names.find(w[2 + k]);
-      if (it == names.end()) fail("operand '" + w[2 + k] + "' is not defined above");
+      if (it == names.end()) fail("operand " + quoted(w[2 + k]) + " is not defined above");
       return it->second;
     };
     NodeId id;
     if (opword == "const") {
       want(1);
-      const char* s = w[2].c_str();
-      char* end = nullptr;
-      errno = 0;
-      const double v = std::strtod(s, &end);
-      if (end == s || *end != '\0' || errno == ERANGE) fail("'" + w[2] + "' is not a number");
-      id = dag::constant(v);
+      const std::optional<double> v = parse_double(w[2]);
+      if (!v) fail(quoted(w[2]) + " is not a number (or is out of double's range)");
+      id = dag::constant(*v);
     } else if (opword.rfind("var-", 0) == 0) {
       want(0);
       const std::string axis = opword.substr(4);
@@ -78,7 +85,7 @@ Fn read_vm(std::istream& in, const std::string& source_name) {
         char* end = nullptr;
         const long v = std::strtol(axis.c_str(), &end, 10);
         if (axis.empty() || *end != '\0' || v < 0 || v >= kMaxInputs)
-          fail("'" + opword + "' is not a coordinate (var-x, var-y, var-z or var-N with N < " +
+          fail(quoted(opword) + " is not a coordinate (var-x, var-y, var-z or var-N with N < " +
                std::to_string(kMaxInputs) + ")");
         index = static_cast<int>(v);
       }
@@ -86,7 +93,7 @@ Fn read_vm(std::istream& in, const std::string& source_name) {
     } else {
       bool found;
       const Op op = parse_op(opword, &found);
-      if (!found) fail("unknown opcode '" + opword + "'");
+      if (!found) fail("unknown opcode " + quoted(opword));
       const int ar = arity(op);
       want(static_cast<std::size_t>(ar));
       id = dag::make(op, operand(0), ar >= 2 ? operand(1) : kNoNode, ar >= 3 ? operand(2) : kNoNode);
@@ -110,7 +117,7 @@ void write_vm(std::ostream& out, const Fn& f) {
                                 std::to_string(f.dim()));
   std::unordered_map<NodeId, std::string> name;
   std::ostringstream os;
-  os << std::setprecision(17);
+  os.imbue(std::locale::classic());  // names and indices; numbers go through format_double
   for (NodeId id : dag::topological_order(f.nodes())) {
     const Node& n = dag::node(id);
     std::ostringstream label;
@@ -118,7 +125,7 @@ void write_vm(std::ostream& out, const Fn& f) {
     const std::string me = label.str();
     os << me << ' ';
     switch (n.op) {
-      case Op::Const: os << "const " << n.value; break;
+      case Op::Const: os << "const " << format_double(n.value); break;
       case Op::Var:
         if (n.index < 3) os << "var-" << "xyz"[n.index];
         else os << "var-" << n.index;

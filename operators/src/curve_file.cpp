@@ -1,9 +1,12 @@
 #include "genmod/operators/curve_file.hpp"
 
+#include "genmod/kernel/number_text.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -17,7 +20,7 @@ namespace {
 // "prefix" + word, built by appending (GCC 12 warns falsely about const char* + string&&).
 std::string text(const char* prefix, std::string_view word) {
   std::string s(prefix);
-  s.append(word);
+  s.append(printable(word));
   return s;
 }
 
@@ -41,7 +44,7 @@ class Parser {
       const std::string keyword(words[0]);
       words.erase(words.begin());
       if (!seen_header) {
-        if (keyword != "crv") fail(line_no, "expected the header `crv 1`, got `" + keyword + "`");
+        if (keyword != "crv") fail(line_no, "expected the header `crv 1`, got `" + printable(keyword) + "`");
         if (count(line_no, words, 1, "crv") && integer(line_no, words[0]) != 1)
           fail(line_no, text("unsupported format version ", words[0]) + " (this reader knows 1)");
         seen_header = true;
@@ -76,11 +79,9 @@ class Parser {
   }
 
   double number(int line, std::string_view word) const {
-    double v = 0.0;
-    const auto [ptr, ec] = std::from_chars(word.data(), word.data() + word.size(), v);
-    if (ec != std::errc() || ptr != word.data() + word.size() || !std::isfinite(v))
-      fail(line, text("`", word) + "` is not a finite number");
-    return v;
+    const std::optional<double> v = parse_double(word);
+    if (!v || !std::isfinite(*v)) fail(line, text("`", word) + "` is not a finite number");
+    return *v;
   }
 
   int integer(int line, std::string_view word) const {
@@ -96,7 +97,7 @@ class Parser {
       static const char* kinds[] = {"polyline", "bezier", "bspline", "nurbs", "hermite", "catmull-rom"};
       type_ = std::string(words[0]);
       if (std::find(std::begin(kinds), std::end(kinds), type_) == std::end(kinds))
-        fail(line, "unknown curve type `" + type_ + "` (polyline, bezier, bspline, nurbs, hermite, catmull-rom)");
+        fail(line, "unknown curve type `" + printable(type_) + "` (polyline, bezier, bspline, nurbs, hermite, catmull-rom)");
       type_line_ = line;
     } else if (keyword == "dimension") {
       count(line, words, 1, "dimension");
@@ -143,7 +144,7 @@ class Parser {
     } else if (keyword == "crv") {
       fail(line, "a second `crv` header");
     } else {
-      fail(line, "unknown keyword `" + keyword + "`");
+      fail(line, "unknown keyword `" + printable(keyword) + "`");
     }
   }
 

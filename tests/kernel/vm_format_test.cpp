@@ -1,4 +1,5 @@
 // Reading and writing the .vm text format.
+#include "genmod/kernel/number_text.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
 #include "genmod/kernel/vm_format.hpp"
@@ -6,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+#include <locale>
 #include <sstream>
 
 namespace genmod {
@@ -77,6 +80,41 @@ TEST(VmFormat, WriteThenReadGivesTheSameFunction) {
   write_vm(out, prospero);
   EXPECT_EQ(read(out.str()).node(0), prospero.node(0));
   EXPECT_THROW(write_vm(out, cat({x(0), x(1)})), std::invalid_argument);
+}
+
+// Every double genmod writes reads back exactly: subnormals (the old reader refused them as
+// ERANGE), extremes, signed zero, infinities; whatever the stream's locale says about decimal
+// points; and the same reader serves the curve files (operators/curve_file.cpp).
+TEST(VmFormat, EveryConstantRoundTripsWhateverTheLocale) {
+  struct Comma : std::numpunct<char> {
+    char do_decimal_point() const override { return ','; }
+    std::string do_grouping() const override { return "\3"; }
+  };
+  const double values[] = {std::numeric_limits<double>::denorm_min(), 4.9406564584124654e-324, 2.2250738585072009e-308,
+                           -std::numeric_limits<double>::max(), 1.0 / 3.0, -0.0, 1234567.0, 0.1,
+                           std::numeric_limits<double>::infinity()};
+  for (double v : values) {
+    std::ostringstream out;
+    out.imbue(std::locale(std::locale::classic(), new Comma));
+    write_vm(out, Fn(v) + x(0));
+    const Fn back = read(out.str());
+    EXPECT_EQ(back.node(0), (Fn(v) + x(0)).node(0)) << out.str();
+  }
+  EXPECT_EQ(parse_double("+1.5"), 1.5);
+  EXPECT_EQ(parse_double("4.9406564584124654e-324"), std::numeric_limits<double>::denorm_min());
+  EXPECT_FALSE(parse_double("1e309"));   // overflow
+  EXPECT_FALSE(parse_double("1e-330"));  // underflow to zero
+  EXPECT_FALSE(parse_double("1,5"));
+  EXPECT_FALSE(parse_double(""));
+  EXPECT_FALSE(parse_double("0x1p3"));
+}
+
+TEST(VmFormat, ErrorMessagesEscapeControlBytes) {
+  const std::string message = error_of("_0 var-x\n_1 fr\x1b[2Job _0\n");
+  EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;
+  EXPECT_NE(message.find("fr\\x1b[2Job"), std::string::npos) << message;
+  EXPECT_EQ(printable(std::string(100, 'a'), 10), "aaaaaaaaaa...");
+  EXPECT_EQ(printable("caf\xc3\xa9"), "caf\\xc3\\xa9");
 }
 
 }  // namespace
