@@ -26,7 +26,41 @@ struct Evaluators {
   GradientEvaluator gradient;
 };
 
-// Looks for a sign change of f along the descent direction from p (see validate.hpp).
+// The distance from p to the first sign change of f found on the ray p + t dir (dir a unit
+// vector), trying steps slightly past `estimate` and then growing geometrically up to
+// `search_radius`, bisected once found; < 0 when there is none.
+double sign_change_along(const Tape& tape, PointEvaluator& point, const std::array<double, 3>& p, double f,
+                         const double dir[3], double estimate, double search_radius) {
+  static constexpr double kFactors[] = {1.0 + 1e-9, 1.0 + 1e-6, 1.001, 1.01, 1.1, 1.5, 2.0, 3.0, 5.0, 8.0, 13.0};
+  auto flips = [&](double t) {
+    const double q[3] = {p[0] + t * dir[0], p[1] + t * dir[1], p[2] + t * dir[2]};
+    const double fq = point.eval(tape, q)[0];
+    return fq == 0.0 || (fq > 0) != (f > 0);
+  };
+  double same = 0.0;  // a step with f's sign (0: the point itself)
+  for (double factor : kFactors) {
+    double t = estimate * factor;
+    if (t > search_radius && factor > 1.1) break;
+    if (!flips(t)) {
+      same = t;
+      continue;
+    }
+    for (int i = 0; i < 12 && t - same > 1e-3 * t; ++i) {
+      const double mid = 0.5 * (same + t);
+      if (flips(mid)) t = mid;
+      else same = mid;
+    }
+    // |q - p| as evaluated (dir is a unit vector up to rounding).
+    const double q[3] = {p[0] + t * dir[0], p[1] + t * dir[1], p[2] + t * dir[2]};
+    const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+  }
+  return -1.0;
+}
+
+// Looks for a sign change of f from p along the descent direction; where that finds none, or
+// one much farther than the first-order estimate (near a kink of f the gradient can point
+// away from the nearest surface), also along the six axis directions, keeping the nearest.
 Result distance_at(const Tape& tape, Evaluators& ev, const std::array<double, 3>& p, double search_radius) {
   Result r;
   ev.gradient.eval(tape, p);
@@ -43,34 +77,17 @@ Result distance_at(const Tape& tape, Evaluators& ev, const std::array<double, 3>
   }
   r.estimate = std::fabs(f) / gn;
   const double s = f > 0 ? -1.0 / gn : 1.0 / gn;
-  const double dir[3] = {s * g[0], s * g[1], s * g[2]};
-  // Steps slightly past the first-order estimate, then growing geometrically; once the sign
-  // changes, bisection between the last two steps tightens the bound.
-  static constexpr double kFactors[] = {1.0 + 1e-9, 1.0 + 1e-6, 1.001, 1.01, 1.1, 1.5, 2.0, 3.0, 5.0, 8.0, 13.0};
-  auto flips = [&](double t) {
-    const double q[3] = {p[0] + t * dir[0], p[1] + t * dir[1], p[2] + t * dir[2]};
-    const double fq = ev.point.eval(tape, q)[0];
-    return fq == 0.0 || (fq > 0) != (f > 0);
-  };
-  double same = 0.0;  // a step with f's sign (0: the point itself)
-  for (double factor : kFactors) {
-    double t = r.estimate * factor;
-    if (t > search_radius && factor > 1.1) break;
-    if (!flips(t)) {
-      same = t;
-      continue;
+  const double descent[3] = {s * g[0], s * g[1], s * g[2]};
+  r.bound = sign_change_along(tape, ev.point, p, f, descent, r.estimate, search_radius);
+  if (r.bound >= 0 && r.bound <= 2 * r.estimate) return r;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double sign : {-1.0, 1.0}) {
+      double dir[3] = {0, 0, 0};
+      dir[axis] = sign;
+      const double radius = r.bound >= 0 ? std::min(search_radius, r.bound) : search_radius;
+      const double b = sign_change_along(tape, ev.point, p, f, dir, std::min(r.estimate, radius), radius);
+      if (b >= 0 && (r.bound < 0 || b < r.bound)) r.bound = b;
     }
-    for (int i = 0; i < 12 && t - same > 1e-3 * t; ++i) {
-      const double mid = 0.5 * (same + t);
-      if (flips(mid)) t = mid;
-      else same = mid;
-    }
-    // |q - p| as evaluated (dir is a unit vector up to rounding).
-    const double q[3] = {p[0] + t * dir[0], p[1] + t * dir[1], p[2] + t * dir[2]};
-    const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
-    r.bound = std::sqrt(dx * dx + dy * dy + dz * dz);
-    return r;
-  }
   return r;
 }
 

@@ -33,8 +33,11 @@ namespace genmod {
 // For each vertex v (and each sample point inside each triangle) the estimate is
 // |f(v)| / |grad f(v)|. The bound is certified by a sign change: genmod looks for a point q
 // on the ray from v along -sign(f(v)) grad f with f(q) of the other sign (or zero); the
-// segment [v, q] crosses the surface, so the distance is at most |q - v|. Points where no sign
-// change is found within `search_radius` are counted as uncertified. Signs are those of
+// segment [v, q] crosses the surface, so the distance is at most |q - v|. Where that ray finds
+// no sign change, or one farther than twice the estimate (near a kink of f the gradient can
+// point away from the nearest surface), the six axis directions are searched too and the
+// nearest sign change kept. Points where none is found within `search_radius` are counted as
+// uncertified. Signs are those of
 // genmod's point evaluation (exact up to its rounding).
 struct SurfaceDistance {
   std::size_t points = 0;                // vertices + triangle samples examined
