@@ -45,6 +45,9 @@ std::vector<int> parse_tile_sizes(const std::string& text) {
     sizes.push_back(v);
     begin = end + 1;
   }
+  if (sizes.size() > kMaxTileLevels)
+    throw UsageError("option --tiles takes at most " + std::to_string(kMaxTileLevels) + " tile widths, got " +
+                     std::to_string(sizes.size()));
   return sizes;
 }
 

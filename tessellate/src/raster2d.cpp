@@ -66,6 +66,9 @@ class TileRenderer {
           w.stats.levels.resize(tile_sizes_.size() + 1);
           return w;
         }) {
+    if (tile_sizes_.size() > kMaxTileLevels)
+      throw std::invalid_argument("genmod: render_sign: at most " + std::to_string(kMaxTileLevels) +
+                                  " tile levels, got " + std::to_string(tile_sizes_.size()));
     for (std::size_t k = 0; k < tile_sizes_.size(); ++k) {
       const bool decreasing = k == 0 || tile_sizes_[k] < tile_sizes_[k - 1];
       if (tile_sizes_[k] < 1 || !decreasing)

@@ -4,6 +4,7 @@
 
 #include "genmod/kernel/batch_evaluator.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/tessellate/raster2d.hpp"
 #include "shaded_common.hpp"
 #include "thread_arena.hpp"
 
@@ -47,6 +48,9 @@ class CubeRenderer {
         grid_(options, "render_shaded"),
         tile_sizes_(options.tile_sizes),
         heights_(static_cast<std::size_t>(grid_.size()) * static_cast<std::size_t>(grid_.size()), 0) {
+    if (tile_sizes_.size() > kMaxTileLevels)
+      throw std::invalid_argument("genmod: render_shaded: at most " + std::to_string(kMaxTileLevels) +
+                                  " tile levels, got " + std::to_string(tile_sizes_.size()));
     for (std::size_t k = 0; k < tile_sizes_.size(); ++k)
       if (tile_sizes_[k] < 1 || (k > 0 && tile_sizes_[k] >= tile_sizes_[k - 1]))
         throw std::invalid_argument("genmod: render_shaded: tile_sizes must be positive and strictly decreasing; entry " +

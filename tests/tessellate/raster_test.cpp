@@ -214,6 +214,13 @@ TEST(RenderSign, RejectsBadInputNamingTheProblem) {
   bad = {};
   bad.threads = -1;
   EXPECT_NE(message(bad).find("threads"), std::string::npos);
+  // A long tile list (each level nests parallel tasks) is refused, not run to a stack overflow.
+  bad = {};
+  bad.tile_sizes.clear();
+  for (int w = 1000; w >= 1; --w) bad.tile_sizes.push_back(w);
+  EXPECT_NE(message(bad).find("at most 16 tile levels, got 1000"), std::string::npos);
+  bad.tile_sizes.resize(kMaxTileLevels);
+  EXPECT_EQ(message(bad), "no exception");
   bad = {};
   bad.x_range = Interval(0.5, 0.5);
   EXPECT_NE(message(bad).find("x_range"), std::string::npos);

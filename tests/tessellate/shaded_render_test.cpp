@@ -115,6 +115,12 @@ TEST(ShadedRender, BadInputIsRefusedWithAMessage) {
             std::string::npos);
   EXPECT_NE(message([] { render_shaded(Tape(sphere(1)), {.size = 8, .tile_sizes = {4, 8}}); }).find("tile_sizes"),
             std::string::npos);
+  EXPECT_NE(message([] {
+              std::vector<int> many(40);
+              for (int k = 0; k < 40; ++k) many[static_cast<std::size_t>(k)] = 40 - k;
+              render_shaded(Tape(sphere(1)), {.size = 8, .tile_sizes = many});
+            }).find("at most 16 tile levels"),
+            std::string::npos);
   EXPECT_NE(message([] { render_shaded_brute_force(Tape(sphere(1)), {.size = 8, .depth = -1}); }).find("depth"),
             std::string::npos);
 }

@@ -36,12 +36,16 @@ namespace genmod {
 inline constexpr std::uint8_t kInside = 255;
 inline constexpr std::uint8_t kOutside = 0;
 inline constexpr int kMaxRasterSize = 1 << 15;
+// At most this many tile levels below the whole image (the subdivision nests one parallel
+// task level per tile level, so the list's length bounds the depth of the worker stacks).
+inline constexpr std::size_t kMaxTileLevels = 16;
 
 struct RasterOptions {
   int size = 1024;                      // the image is size x size pixels, 1 <= size <= kMaxRasterSize
   Interval x_range{-1.0, 1.0};          // region covered by the image (bounded, nonzero width)
   Interval y_range{-1.0, 1.0};
-  // Tile widths in pixels below the whole image, strictly decreasing, >= 1. The default was
+  // Tile widths in pixels below the whole image, strictly decreasing, >= 1, at most
+  // kMaxTileLevels of them. The default was
   // the fastest for Prospero at 1024: interval evaluation plus pruning costs about as much per
   // clause as 100 batch point evaluations, so small tiles do not pay, and the last level's
   // tiles hold 256 pixels.

@@ -43,7 +43,8 @@ struct ShadedOptions {
   Box3 box{Interval(-1, 1), Interval(-1, 1), Interval(-1, 1)};  // bounded, nonzero widths
   // Voxels along z, 1 <= depth <= kMaxShadedSize; 0 = cubes as wide as the pixels in x.
   int depth = 0;
-  // Cube edges in voxels below the whole block, strictly decreasing, >= 1.
+  // Cube edges in voxels below the whole block, strictly decreasing, >= 1, at most
+  // kMaxTileLevels (raster2d.hpp) of them.
   std::vector<int> tile_sizes{64, 16, 4};
   int threads = 0;  // worker threads; 0 = all cores
 };
