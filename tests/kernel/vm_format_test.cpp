@@ -109,6 +109,29 @@ TEST(VmFormat, EveryConstantRoundTripsWhateverTheLocale) {
   EXPECT_FALSE(parse_double("0x1p3"));
 }
 
+// Reading has limits: a file without newlines (/dev/zero) or too large ends in an error that
+// names the limit, not in a process that fills the memory; a read error is not taken for the
+// end of the file.
+TEST(VmFormat, ReadingStopsAtItsLimitsAndReportsReadErrors) {
+  auto load_error = [](const std::string& path, VmReadLimits limits) {
+    try {
+      load_vm(path, limits);
+    } catch (const std::runtime_error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  EXPECT_NE(load_error("/dev/zero", {}).find("a line is longer than the limit of 1048576 bytes"), std::string::npos);
+  EXPECT_NE(load_error(GENMOD_DATA_DIR "/prospero.vm", {.max_bytes = 1000}).find("larger than the limit of 1000"),
+            std::string::npos);
+  EXPECT_NE(load_error(GENMOD_DATA_DIR "/prospero.vm", {.max_line = 10}).find("longer than the limit of 10"),
+            std::string::npos);
+  EXPECT_NE(load_error(GENMOD_DATA_DIR, {}).find("read error"), std::string::npos);  // a directory
+  EXPECT_EQ(load_error(GENMOD_DATA_DIR "/prospero.vm", {}), "no exception");
+  std::istringstream in("_0 var-x\n_1 add _0 _0\n" + std::string(64, 'x'));
+  EXPECT_THROW(read_vm(in, "s", {.max_line = 32}), VmFormatError);
+}
+
 TEST(VmFormat, ErrorMessagesEscapeControlBytes) {
   const std::string message = error_of("_0 var-x\n_1 fr\x1b[2Job _0\n");
   EXPECT_EQ(message.find('\x1b'), std::string::npos) << message;

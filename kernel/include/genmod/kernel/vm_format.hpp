@@ -8,6 +8,7 @@
 
 #include "genmod/kernel/fn.hpp"
 
+#include <cstddef>
 #include <iosfwd>
 #include <stdexcept>
 #include <string>
@@ -24,8 +25,17 @@ class VmFormatError : public std::runtime_error {
   int line_;
 };
 
-Fn read_vm(std::istream& in, const std::string& source_name = "<stream>");
-Fn load_vm(const std::string& path);
+// How much a reader takes before it gives up with a VmFormatError (a model file is text of
+// at most a few megabytes; /dev/zero or a wrong path must not fill the memory).
+struct VmReadLimits {
+  std::size_t max_bytes = std::size_t{1} << 30;  // the whole file
+  std::size_t max_line = std::size_t{1} << 20;   // one line
+};
+
+// Reads a model; VmFormatError for malformed text, a limit passed, or a read error of the
+// stream (which is never taken for the end of the file).
+Fn read_vm(std::istream& in, const std::string& source_name = "<stream>", const VmReadLimits& limits = {});
+Fn load_vm(const std::string& path, const VmReadLimits& limits = {});
 // Writes a scalar function (std::invalid_argument for a vector). Custom operators cannot be
 // written (std::invalid_argument names the operator).
 void write_vm(std::ostream& out, const Fn& f);
