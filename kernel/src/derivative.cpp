@@ -27,16 +27,59 @@ class Differentiator {
  public:
   explicit Differentiator(int var) : var_(var) {}
 
-  NodeId d(NodeId id) {
-    const Node& n = dag::node(id);
-    if (!(n.inputs >> var_ & 1u)) return c(0.0);
-    if (auto it = memo_.find(id); it != memo_.end()) return it->second;
-    const NodeId r = rule(id, n);
-    memo_.emplace(id, r);
-    return r;
+  // d root / d x(var). Iterative: the derivatives a node's rule needs are made first (post
+  // order over an explicit stack), so the rules only look them up, and the depth of the DAG
+  // is bounded by memory, not by the call stack.
+  NodeId derive(NodeId root) {
+    std::vector<std::pair<NodeId, bool>> stack{{root, false}};
+    while (!stack.empty()) {
+      auto [id, expanded] = stack.back();
+      stack.pop_back();
+      if (!depends(id) || memo_.count(id)) continue;
+      const Node& n = dag::node(id);
+      if (expanded) {
+        memo_.emplace(id, rule(id, n));
+        continue;
+      }
+      stack.emplace_back(id, true);
+      for_each_needed(n, [&](NodeId a) {
+        if (depends(a) && !memo_.count(a)) stack.emplace_back(a, false);
+      });
+    }
+    return d(root);
   }
 
  private:
+  bool depends(NodeId id) const { return dag::node(id).inputs >> var_ & 1u; }
+
+  // The derivative of a node made earlier (derive's post order); 0 if it does not depend on
+  // the variable.
+  NodeId d(NodeId id) const {
+    if (!depends(id)) return c(0.0);
+    return memo_.at(id);
+  }
+
+  // The arguments whose derivatives rule() uses: none for the piecewise constant ops, the two
+  // branches of a select (not its condition).
+  template <class F>
+  static void for_each_needed(const Node& n, F&& f) {
+    switch (n.op) {
+      case Op::Floor: case Op::Ceil: case Op::Not: case Op::IsError:
+      case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne:
+      case Op::And: case Op::Or: case Op::Const: case Op::Var:
+        return;
+      case Op::Select:
+        f(n.arg[1]);
+        f(n.arg[2]);
+        return;
+      case Op::Custom:
+        for (NodeId a : dag::custom_args(n)) f(a);
+        return;
+      default:
+        for (int k = 0; k < arity(n.op); ++k) f(n.arg[k]);
+    }
+  }
+
   NodeId rule(NodeId id, const Node& n) {
     const NodeId a = n.arg[0], b = n.arg[1];
     switch (n.op) {
@@ -121,27 +164,48 @@ class Substituter {
     for (const auto& [i, n] : replace_) mask_ |= std::uint64_t{1} << i;
   }
 
-  NodeId sub(NodeId id) {
-    const Node& n = dag::node(id);
-    if (!(n.inputs & mask_)) return id;
-    if (auto it = memo_.find(id); it != memo_.end()) return it->second;
-    NodeId r;
-    if (n.op == Op::Var) {
-      r = replace_.at(n.index);
-    } else if (n.op == Op::Custom) {
-      std::vector<NodeId> args;
-      for (NodeId a : dag::custom_args(n)) args.push_back(sub(a));
-      r = dag::make_custom(n.custom, n.index, args);
-    } else {
-      NodeId args[3] = {kNoNode, kNoNode, kNoNode};
-      for (int k = 0; k < arity(n.op); ++k) args[k] = sub(n.arg[k]);
-      r = make(n.op, args[0], args[1], args[2]);
+  // root with the coordinates replaced. Iterative like Differentiator::derive: arguments are
+  // rebuilt before the nodes that use them.
+  NodeId substitute(NodeId root) {
+    std::vector<std::pair<NodeId, bool>> stack{{root, false}};
+    while (!stack.empty()) {
+      auto [id, expanded] = stack.back();
+      stack.pop_back();
+      if (!touched(id) || memo_.count(id)) continue;
+      const Node& n = dag::node(id);
+      if (expanded) {
+        memo_.emplace(id, rebuild(n));
+        continue;
+      }
+      stack.emplace_back(id, true);
+      auto push = [&](NodeId a) {
+        if (touched(a) && !memo_.count(a)) stack.emplace_back(a, false);
+      };
+      if (n.op == Op::Custom) {
+        for (NodeId a : dag::custom_args(n)) push(a);
+      } else {
+        for (int k = 0; k < arity(n.op); ++k) push(n.arg[k]);
+      }
     }
-    memo_.emplace(id, r);
-    return r;
+    return sub(root);
   }
 
  private:
+  bool touched(NodeId id) const { return (dag::node(id).inputs & mask_) != 0; }
+  NodeId sub(NodeId id) const { return touched(id) ? memo_.at(id) : id; }
+
+  NodeId rebuild(const Node& n) const {
+    if (n.op == Op::Var) return replace_.at(n.index);
+    if (n.op == Op::Custom) {
+      std::vector<NodeId> args;
+      for (NodeId a : dag::custom_args(n)) args.push_back(sub(a));
+      return dag::make_custom(n.custom, n.index, args);
+    }
+    NodeId args[3] = {kNoNode, kNoNode, kNoNode};
+    for (int k = 0; k < arity(n.op); ++k) args[k] = sub(n.arg[k]);
+    return make(n.op, args[0], args[1], args[2]);
+  }
+
   std::unordered_map<int, NodeId> replace_;
   std::uint64_t mask_ = 0;
   std::unordered_map<NodeId, NodeId> memo_;
@@ -159,7 +223,7 @@ Fn derivative(const Fn& f, int i) {
   check_coordinate(i, "derivative");
   Differentiator diff(i);
   std::vector<NodeId> out;
-  for (NodeId n : f.nodes()) out.push_back(diff.d(n));
+  for (NodeId n : f.nodes()) out.push_back(diff.derive(n));
   return Fn(std::move(out));
 }
 
@@ -170,7 +234,7 @@ Fn compose(const Fn& f, int i, const Fn& g) {
                                 std::to_string(g.dim()));
   Substituter s({{i, g.node(0)}});
   std::vector<NodeId> out;
-  for (NodeId n : f.nodes()) out.push_back(s.sub(n));
+  for (NodeId n : f.nodes()) out.push_back(s.substitute(n));
   return Fn(std::move(out));
 }
 
@@ -186,7 +250,7 @@ Fn compose_all(const Fn& f, std::span<const int> inputs, const Fn& g) {
   }
   Substituter s(std::move(replace));
   std::vector<NodeId> out;
-  for (NodeId n : f.nodes()) out.push_back(s.sub(n));
+  for (NodeId n : f.nodes()) out.push_back(s.substitute(n));
   return Fn(std::move(out));
 }
 

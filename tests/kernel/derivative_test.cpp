@@ -1,6 +1,7 @@
 // Symbolic derivatives against central differences, and the forward-mode gradient evaluator
 // against the symbolic derivative.
 #include "genmod/kernel/gradient_evaluator.hpp"
+#include "genmod/kernel/inclusion.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
 #include "kernel/random_functions.hpp"
 
@@ -119,6 +120,25 @@ TEST(Derivative, SharedSubexpressionsKeepDerivativeDagsSmall) {
   const double at20 = derivative_tape_size(20), at40 = derivative_tape_size(40);
   EXPECT_LT(at40 / at20, 2.2);
   EXPECT_LT(at40, 40 * 10);
+}
+
+// A chain 70,000 operations deep (a `.vm` file can be one) is differentiated, composed and
+// bounded without recursion on its depth (these walks used to overflow the stack at 60,000).
+TEST(Derivative, DeepChainsNeedNoStack) {
+  Fn f = x(0);
+  for (int k = 0; k < 70000; ++k) f = k % 2 ? sin(f) : f * 1.0001 + x(1);
+  const Fn df = derivative(f, 0);
+  const Fn g = compose(f, 1, x(0) * 2.0);
+  const Fn dg = derivative(g, 0);
+  // Spot values against the gradient evaluator on the same tape.
+  GradientEvaluator grad;
+  const Tape tape(f, std::vector<int>{0, 1});
+  grad.eval(tape, std::vector<double>{0.3, 0.1});
+  EXPECT_DOUBLE_EQ(evaluate(df, std::vector<double>{0.3, 0.1})[0], grad.jacobian()[0]);
+  EXPECT_TRUE(std::isfinite(evaluate(dg, std::vector<double>{0.3})[0]));
+  InclusionFunction bound(f);
+  const Interval r = bound.eval(std::vector<Interval>{Interval(0.25, 0.35), Interval(0.05, 0.15)})[0];
+  EXPECT_TRUE(r.contains(evaluate(f, std::vector<double>{0.3, 0.1})[0]));
 }
 
 }  // namespace
