@@ -19,17 +19,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 double dot3(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-Point3 velocity(const CubicCurve& c, double t) {
-  Point3 v;
-  for (int i = 0; i < 3; ++i) v[i] = (3 * c.c1[i] * t + 2 * c.c2[i]) * t + c.c3[i];
-  return v;
-}
-Point3 acceleration(const CubicCurve& c, double t) {
-  Point3 a;
-  for (int i = 0; i < 3; ++i) a[i] = 6 * c.c1[i] * t + 2 * c.c2[i];
-  return a;
-}
-
 double distance2(const CubicCurve& c, double t, const Point3& p) {
   const Point3 q = c.at(t);
   double s = 0;

@@ -11,8 +11,6 @@
 namespace genmod {
 namespace {
 
-Fn constant3(const Point3& v) { return cat({v[0], v[1], v[2]}); }
-
 Point3 sub(const Point3& a, const Point3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
 double dot3(const Point3& a, const Point3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 Point3 cross3(const Point3& a, const Point3& b) {

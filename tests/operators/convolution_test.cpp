@@ -376,7 +376,9 @@ TEST(BloomenthalClaims, Claim21KernelNormalization) {
     const Fn h = normalized_kernel(k, square(x(0)));
     EXPECT_NEAR(at1(h, 0), 1, 1e-15);
     EXPECT_NEAR(at1(h, 1), 0.5, 2e-6);
-    if (k != Kernel::gaussian) EXPECT_EQ(at1(h, kernel_support(k) * 1.0001), 0.0);
+    if (k != Kernel::gaussian) {
+      EXPECT_EQ(at1(h, kernel_support(k) * 1.0001), 0.0);
+    }
   }
 }
 
@@ -402,7 +404,9 @@ TEST(BloomenthalClaims, Claim22PointSourceConvergence) {
       for (double gy = 0; gy <= 0.5; gy += 0.05) worst = std::max(worst, std::abs(at(sum, gx, gy, 0) - at(seg, gx, gy, 0)));
     EXPECT_LT(worst, previous) << n;
     previous = worst;
-    if (n == 31) EXPECT_LT(worst, 1e-3);
+    if (n == 31) {
+      EXPECT_LT(worst, 1e-3);
+    }
   }
 }
 
