@@ -4,8 +4,6 @@
 #include "file_arguments.hpp"
 #include "model_file.hpp"
 
-#include "genmod/models/implicit_gallery.hpp"
-
 #include "genmod/tessellate/mesh_io.hpp"
 #include "genmod/tessellate/validate.hpp"
 
@@ -19,11 +17,7 @@ namespace genmod::app {
 namespace {
 
 // The implicit surface a mesh is measured against: a gallery name or a .vm file in x, y, z.
-Tape surface_tape(const std::string& name) {
-  const models::ImplicitModel* model = models::find_implicit_model(name);
-  const Fn f = model ? models::build_implicit_model(*model) : load_model(name);
-  return Tape(f, std::vector<int>{0, 1, 2});
-}
+Tape surface_tape(const std::string& name) { return Tape(load_implicit_model(name), std::vector<int>{0, 1, 2}); }
 
 int run_check(std::span<const std::string> args) {
   static constexpr std::array<const char*, 0> kFlags{};

@@ -44,7 +44,6 @@ int run_mesh_implicit(std::span<const std::string> args) {
     throw UsageError("expected one model, got " + std::to_string(a.positional().size()) + " arguments");
   const std::string& path = a.positional()[0];
   const models::ImplicitModel* model = models::find_implicit_model(path);
-  if (!model && !overrides.empty()) throw UsageError("--param applies to gallery models, not to " + path);
   const std::optional<std::string> output = a.value({"-o", "--output"});
   if (!output) throw UsageError("missing output file (-o FILE)");
   if (!model && !a.value({"--min-feature"})) throw UsageError("missing --min-feature H (the smallest cell edge)");
@@ -64,16 +63,7 @@ int run_mesh_implicit(std::span<const std::string> args) {
                           : Box3{Interval(-1, 1), Interval(-1, 1), Interval(-1, 1)};
   check_writable(*output);
 
-  Fn f;
-  if (model) {
-    try {
-      f = models::build_implicit_model(*model, overrides);
-    } catch (const std::invalid_argument& e) {
-      throw UsageError(e.what());
-    }
-  } else {
-    f = load_model(path);
-  }
+  const Fn f = load_implicit_model(path, overrides);
   const auto start = std::chrono::steady_clock::now();
   ImplicitMesh result;
   try {

@@ -74,7 +74,7 @@ int run_render_shaded(std::span<const std::string> args) {
   const Box3 box = box_text ? parse_box(*box_text)
                  : model  ? model->box
                           : Box3{Interval(-1, 1), Interval(-1, 1), Interval(-1, 1)};
-  const Fn f = model ? models::build_implicit_model(*model) : load_model(name);
+  const Fn f = load_implicit_model(name);
   const View view = turn(f, box, a.value({"--view"}).value_or(model ? "iso" : "top"));
   options.box = view.box;
   const Tape tape = [&] {

@@ -1,19 +1,28 @@
 #include "model_file.hpp"
 
+#include "commands.hpp"
 #include "genmod/kernel/vm_format.hpp"
+#include "genmod/models/implicit_gallery.hpp"
 
 #include <array>
 #include <bit>
-#include <filesystem>
 #include <stdexcept>
 
 namespace genmod::app {
 
-Fn load_model(const std::string& path) {
-  // load_vm reports unreadable files; a directory opens fine as a stream, so check first.
-  if (std::filesystem::is_directory(path))
-    throw std::runtime_error("genmod: '" + path + "' is a directory, not a model");
-  return load_vm(path);
+Fn load_model(const std::string& path) { return load_vm(path); }
+
+Fn load_implicit_model(const std::string& name, const models::ParameterValues& overrides) {
+  const models::ImplicitModel* model = models::find_implicit_model(name);
+  if (!model) {
+    if (!overrides.empty()) throw UsageError("--param applies to gallery models, not to " + name);
+    return load_model(name);
+  }
+  try {
+    return models::build_implicit_model(*model, overrides);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
 }
 
 Tape load_planar_model(const std::string& path) {

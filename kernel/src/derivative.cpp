@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace genmod {
 namespace {
@@ -23,29 +25,41 @@ NodeId add(NodeId a, NodeId b) { return make(Op::Add, a, b); }
 NodeId sub(NodeId a, NodeId b) { return make(Op::Sub, a, b); }
 NodeId div(NodeId a, NodeId b) { return zero(a) ? c(0.0) : make(Op::Div, a, b); }
 
+// Fills memo[id] = make(id, node) for every node below `root` (root included) that `wanted`
+// accepts, arguments before the nodes that use them: a post order over an explicit stack, so
+// the depth of the DAG is bounded by memory, not by the call stack. `arguments(node, visit)`
+// calls visit on the arguments whose results make() reads.
+template <class Wanted, class Arguments, class Make>
+void post_order(NodeId root, std::unordered_map<NodeId, NodeId>& memo, Wanted wanted, Arguments arguments,
+                Make make) {
+  std::vector<std::pair<NodeId, bool>> stack{{root, false}};
+  while (!stack.empty()) {
+    auto [id, expanded] = stack.back();
+    stack.pop_back();
+    if (!wanted(id) || memo.count(id)) continue;
+    const Node& n = dag::node(id);
+    if (expanded) {
+      memo.emplace(id, make(id, n));
+      continue;
+    }
+    stack.emplace_back(id, true);
+    arguments(n, [&](NodeId a) {
+      if (wanted(a) && !memo.count(a)) stack.emplace_back(a, false);
+    });
+  }
+}
+
 class Differentiator {
  public:
   explicit Differentiator(int var) : var_(var) {}
 
-  // d root / d x(var). Iterative: the derivatives a node's rule needs are made first (post
-  // order over an explicit stack), so the rules only look them up, and the depth of the DAG
-  // is bounded by memory, not by the call stack.
+  // d root / d x(var): the derivatives a node's rule needs are made first (post_order), so
+  // the rules only look them up.
   NodeId derive(NodeId root) {
-    std::vector<std::pair<NodeId, bool>> stack{{root, false}};
-    while (!stack.empty()) {
-      auto [id, expanded] = stack.back();
-      stack.pop_back();
-      if (!depends(id) || memo_.count(id)) continue;
-      const Node& n = dag::node(id);
-      if (expanded) {
-        memo_.emplace(id, rule(id, n));
-        continue;
-      }
-      stack.emplace_back(id, true);
-      for_each_needed(n, [&](NodeId a) {
-        if (depends(a) && !memo_.count(a)) stack.emplace_back(a, false);
-      });
-    }
+    post_order(
+        root, memo_, [this](NodeId id) { return depends(id); },
+        [](const Node& n, auto&& visit) { for_each_needed(n, visit); },
+        [this](NodeId id, const Node& n) { return rule(id, n); });
     return d(root);
   }
 
@@ -62,7 +76,7 @@ class Differentiator {
   // The arguments whose derivatives rule() uses: none for the piecewise constant ops, the two
   // branches of a select (not its condition).
   template <class F>
-  static void for_each_needed(const Node& n, F&& f) {
+  static void for_each_needed(const Node& n, F& f) {
     switch (n.op) {
       case Op::Floor: case Op::Ceil: case Op::Not: case Op::IsError:
       case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne:
@@ -164,29 +178,18 @@ class Substituter {
     for (const auto& [i, n] : replace_) mask_ |= std::uint64_t{1} << i;
   }
 
-  // root with the coordinates replaced. Iterative like Differentiator::derive: arguments are
-  // rebuilt before the nodes that use them.
+  // root with the coordinates replaced (post_order: arguments are rebuilt first).
   NodeId substitute(NodeId root) {
-    std::vector<std::pair<NodeId, bool>> stack{{root, false}};
-    while (!stack.empty()) {
-      auto [id, expanded] = stack.back();
-      stack.pop_back();
-      if (!touched(id) || memo_.count(id)) continue;
-      const Node& n = dag::node(id);
-      if (expanded) {
-        memo_.emplace(id, rebuild(n));
-        continue;
-      }
-      stack.emplace_back(id, true);
-      auto push = [&](NodeId a) {
-        if (touched(a) && !memo_.count(a)) stack.emplace_back(a, false);
-      };
-      if (n.op == Op::Custom) {
-        for (NodeId a : dag::custom_args(n)) push(a);
-      } else {
-        for (int k = 0; k < arity(n.op); ++k) push(n.arg[k]);
-      }
-    }
+    post_order(
+        root, memo_, [this](NodeId id) { return touched(id); },
+        [](const Node& n, auto&& visit) {
+          if (n.op == Op::Custom) {
+            for (NodeId a : dag::custom_args(n)) visit(a);
+          } else {
+            for (int k = 0; k < arity(n.op); ++k) visit(n.arg[k]);
+          }
+        },
+        [this](NodeId, const Node& n) { return rebuild(n); });
     return sub(root);
   }
 

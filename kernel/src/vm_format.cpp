@@ -52,20 +52,11 @@ namespace {
 
 // The next line of `in` (without its newline) into `text`; false at the end of the input.
 // Counts the bytes read into `total` and throws VmFormatError past the limits or on a read
-// error.
+// error of the stream.
 bool read_line(std::istream& in, std::string& text, std::size_t& total, const VmReadLimits& limits,
                const std::string& source, int line_no) {
   text.clear();
-  std::streambuf* buffer = in.rdbuf();
-  for (;;) {
-    int c = std::char_traits<char>::eof();
-    try {
-      c = buffer->sbumpc();
-    } catch (...) {
-      in.setstate(std::ios::badbit);
-    }
-    if (in.bad()) throw VmFormatError(source, line_no, "read error");
-    if (c == std::char_traits<char>::eof()) return !text.empty();
+  for (char c; in.get(c);) {
     if (++total > limits.max_bytes)
       throw VmFormatError(source, line_no, "the file is larger than the limit of " + std::to_string(limits.max_bytes) +
                                                " bytes");
@@ -73,8 +64,10 @@ bool read_line(std::istream& in, std::string& text, std::size_t& total, const Vm
     if (text.size() == limits.max_line)
       throw VmFormatError(source, line_no, "a line is longer than the limit of " + std::to_string(limits.max_line) +
                                                " bytes");
-    text.push_back(static_cast<char>(c));
+    text.push_back(c);
   }
+  if (in.bad()) throw VmFormatError(source, line_no, "read error");
+  return !text.empty();
 }
 
 }  // namespace
@@ -85,7 +78,6 @@ Fn read_vm(std::istream& in, const std::string& source_name, const VmReadLimits&
   std::string text;
   int line_no = 0;
   std::size_t total = 0;
-  if (!in.rdbuf()) throw VmFormatError(source_name, 0, "no stream to read");
   while (read_line(in, text, total, limits, source_name, line_no + 1)) {
     ++line_no;
     if (const auto hash = text.find('#'); hash != std::string::npos) text.resize(hash);
