@@ -6,9 +6,11 @@
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
 #include "genmod/tessellate/mesh_io.hpp"
+#include "genmod/tessellate/validate.hpp"
 
 #include <array>
 #include <cerrno>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -51,15 +53,17 @@ int run_mesh(std::span<const std::string> args) {
       rest.push_back(args[i]);
     }
   }
-  static constexpr std::array<const char*, 0> kFlags{};
-  static constexpr std::array<const char*, 3> kValued{"--res", "-o", "--output"};
+  static constexpr std::array<const char*, 1> kFlags{"--no-check"};
+  static constexpr std::array<const char*, 6> kValued{"--res", "-o", "--output", "--tolerance", "--max-leaves",
+                                                      "--threads"};
   const Arguments a(rest, kFlags, kValued);
   if (a.positional().size() != 1)
     throw UsageError(a.positional().empty() ? "missing model name" : "expected one model name, got " +
                                                                           std::to_string(a.positional().size()));
   const std::optional<std::string> output = a.value({"-o", "--output"});
   if (!output) throw UsageError("missing output file (-o FILE)");
-  const int res = a.int_value({"--res"}, 64, 3, 4096);
+  if (a.has("--res") && a.has("--tolerance"))
+    throw UsageError("--res (uniform lattice) and --tolerance (adaptive) exclude each other");
   if (!mesh_format(*output))
     throw UsageError("output '" + *output + "': unknown mesh extension (use .obj, .ply, .stl or .off)");
   check_writable(*output);
@@ -72,20 +76,47 @@ int run_mesh(std::span<const std::string> args) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());  // unknown model, unknown or out-of-range parameter
   }
-  const Mesh mesh = models::mesh_model(*model, surface, static_cast<std::size_t>(res));
-  write_mesh(mesh, *output);
-  std::printf("%s: %zu vertices, %zu triangles -> %s\n", model->name.c_str(), mesh.vertices.size(),
-              mesh.triangles.size(), output->c_str());
-  return 0;
+  if (a.has("--res")) {
+    const int res = a.int_value({"--res"}, 64, 3, 4096);
+    const Mesh mesh = models::mesh_model(*model, surface, static_cast<std::size_t>(res));
+    write_mesh(mesh, *output);
+    std::printf("%s: %zu vertices, %zu triangles (uniform %d x %d lattice) -> %s\n", model->name.c_str(),
+                mesh.vertices.size(), mesh.triangles.size(), res, res, output->c_str());
+    return 0;
+  }
+  AdaptiveMeshOptions options;
+  options.tolerance = positive_option(a, {"--tolerance"}, 0.0, true);
+  if (options.tolerance == 0.0) options.tolerance = 1e-3 * models::model_extent(*model, surface);
+  options.max_leaves = static_cast<std::size_t>(a.int_value({"--max-leaves"}, 4'000'000, 1, 1'000'000'000));
+  options.threads = a.int_value({"--threads"}, 0, 0, 1024);
+  const auto start = std::chrono::steady_clock::now();
+  const AdaptiveMesh m = models::mesh_model_adaptive(*model, surface, options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  write_mesh(m.mesh, *output);
+  std::printf("%s: %zu vertices, %zu triangles from %zu leaves in %.3f s -> %s\n", model->name.c_str(),
+              m.mesh.vertices.size(), m.mesh.triangles.size(), m.leaves, seconds, output->c_str());
+  std::printf("distance to the surface <= %.3g (tolerance %.3g); %zu edges glued, %zu collapsed to a point, %s\n",
+              m.distance_bound, options.tolerance, m.glued_edges, m.collapsed_edges,
+              m.closed() ? "closed" : (std::to_string(m.boundary_edges) + " boundary edges (open)").c_str());
+  for (const std::string& limit : m.limits_hit) std::printf("limit reached: %s\n", limit.c_str());
+  if (a.has("--no-check")) return 0;
+  // The file as written is what users get: check that, not the mesh in memory.
+  const MeshValidity v = validate(read_mesh(*output), {.threads = options.threads});
+  std::printf("%s", describe(v).c_str());
+  const bool sound = v.manifold() && v.oriented() && v.degenerate_triangles == 0 && v.self_intersections == 0;
+  return (model->open ? sound : v.valid()) ? 0 : 1;
 }
 
 }  // namespace
 
 const Command kMeshCommand{
-    "mesh", "NAME [--param NAME=VALUE ...] [--res N] -o FILE | MODEL.vm --min-feature H [options] -o FILE",
+    "mesh", "NAME [--param NAME=VALUE ...] [--tolerance E | --res N] -o FILE | MODEL.vm --min-feature H [options] -o FILE",
     "mesh a gallery model (see `genmod list`) or an implicit .vm model to an OBJ/PLY/STL/OFF file",
     "  -p, --param K=V  set a model parameter (repeatable; defaults from `genmod list`)\n"
-    "  --res N          lattice samples per direction, 3..4096 (default 64)\n"
+    "  --tolerance E    largest distance between mesh and surface (adaptive kd-tree mesher, the default;\n"
+    "                 default 0.001 of the model's size); the certified bound is printed\n"
+    "  --max-leaves N   kd-tree leaf limit (default 4000000; reported when reached)\n"
+    "  --res N          a uniform N x N lattice instead, 3..4096 (faces not welded)\n"
     "  -o, --output     mesh file to write; the format follows the extension (.obj .ply .stl .off)\n"
     "implicit models (MODEL.vm or an implicit gallery name; the mesh bounds the solid f < 0 in the box):\n"
     "  --box x0,y0,z0,x1,y1,z1  region to mesh (default: the model's box, or -1,-1,-1,1,1,1)\n"

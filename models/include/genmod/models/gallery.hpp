@@ -24,6 +24,7 @@
 #include "genmod/kernel/interval.hpp"
 #include "genmod/operators/curve.hpp"
 #include "genmod/tessellate/mesh.hpp"
+#include "genmod/tessellate/parametric_mesher.hpp"
 
 #include <cstddef>
 #include <functional>
@@ -54,6 +55,9 @@ struct Model {
   // A solid S(u, v, w) with w in `w` (three inputs) instead of a surface.
   bool solid = false;
   Interval w = Interval(0.0, 1.0);
+  // Open by nature (a sheet, a fillet piece, a tube without caps): its mesh has a boundary.
+  // Every other model's adaptive mesh is closed.
+  bool open = false;
 };
 
 // All models, in a fixed order.
@@ -75,6 +79,16 @@ Fn build_model(const Model& model, const ParameterValues& overrides = {});
 // (u, v or w at either end of its domain), each an n x n lattice patch, oriented outward
 // where the solid's Jacobian determinant is positive; the patches are not welded.
 Mesh mesh_model(const Model& model, const Fn& surface, std::size_t n);
+// The surface patches of a model for mesh_adaptive: the surface over its domain with its
+// periodic axes, or a solid's six boundary faces (each a function of x(0), x(1); a pair of
+// opposite faces that coincide, as in a solid swept all the way around, is left out).
+std::vector<SurfacePatch> surface_patches(const Model& model, const Fn& surface);
+// The model meshed adaptively (parametric_mesher.hpp): closed models give closed, outward
+// meshes within options.tolerance of the surface.
+// The diagonal of the bounding box of the model's surface at 17 x 17 samples per patch (the
+// scale of the default tolerance).
+double model_extent(const Model& model, const Fn& surface);
+AdaptiveMesh mesh_model_adaptive(const Model& model, const Fn& surface, const AdaptiveMeshOptions& options);
 
 // The curve files of models/curves (compiled into the library): the curve in
 // models/curves/<name>.crv, parsed (CurveFileError naming the file and line), or

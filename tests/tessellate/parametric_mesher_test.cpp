@@ -1,0 +1,280 @@
+// mesh_adaptive: certified distance (mesh samples against the true surface and surface samples
+// against the mesh), conforming triangulations of random kd-trees, seams, poles and glued
+// patches giving closed outward meshes as written (validate, CGAL), claim 37 of
+// research/snyder.md, limits, errors and determinism.
+#include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/tessellate/parametric_mesher.hpp"
+#include "genmod/tessellate/validate.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <random>
+
+namespace genmod {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+const Fn U = x(0), V = x(1);
+
+using Vec3 = std::array<double, 3>;
+
+Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// Distance from p to triangle abc (Ericson's closest-point regions).
+double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+  auto at = [&](double s, double t) {
+    const Vec3 q{a[0] + s * ab[0] + t * ac[0], a[1] + s * ab[1] + t * ac[1], a[2] + s * ab[2] + t * ac[2]};
+    return std::sqrt(dot(sub(p, q), sub(p, q)));
+  };
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return at(0, 0);
+  const Vec3 bp = sub(p, b);
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return at(1, 0);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return at(d1 / (d1 - d3), 0);
+  const Vec3 cp = sub(p, c);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return at(0, 1);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return at(0, d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return at(1 - w, w);
+  }
+  const double denom = 1 / (va + vb + vc);
+  return at(vb * denom, vc * denom);
+}
+
+double distance_to_mesh(const Vec3& p, const Mesh& m) {
+  double best = INFINITY;
+  for (const auto& t : m.triangles)
+    best = std::min(best, point_triangle_distance(p, m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]));
+  return best;
+}
+
+// The largest distance from random surface points to the mesh.
+double surface_to_mesh(const SurfacePatch& patch, const Mesh& mesh, int samples, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> su(patch.u.lo(), patch.u.hi()), sv(patch.v.lo(), patch.v.hi());
+  const Tape tape(patch.surface, std::vector<int>{0, 1});
+  PointEvaluator ev;
+  double worst = 0;
+  for (int i = 0; i < samples; ++i) {
+    const auto s = ev.eval(tape, {su(rng), sv(rng)});
+    worst = std::max(worst, distance_to_mesh({s[0], s[1], s[2]}, mesh));
+  }
+  return worst;
+}
+
+SurfacePatch unit_sphere() {
+  const Fn theta = 2 * kPi * U, phi = kPi * V;
+  return {cat({cos(theta) * sin(phi), sin(theta) * sin(phi), -cos(phi)}), Interval(0, 1), Interval(0, 1), true};
+}
+
+SurfacePatch torus(double R, double r) {
+  const Fn a = 2 * kPi * U, b = 2 * kPi * V;
+  const Fn ring = R + r * cos(b);
+  return {cat({ring * cos(a), ring * sin(a), r * sin(b)}), Interval(0, 1), Interval(0, 1), true, true};
+}
+
+Tape implicit_sphere() {
+  const Fn X = x(0), Y = x(1), Z = x(2);
+  return Tape(sqrt(X * X + Y * Y + Z * Z) - 1.0, std::vector<int>{0, 1, 2});
+}
+
+TEST(AdaptiveMesh, SphereIsClosedOutwardAndWithinTheCertifiedDistance) {
+  const SurfacePatch sphere = unit_sphere();
+  const double tol = 2e-3;
+  const AdaptiveMesh m = mesh_adaptive({sphere}, {.tolerance = tol});
+  EXPECT_TRUE(m.limits_hit.empty());
+  EXPECT_LE(m.distance_bound, tol);
+  EXPECT_EQ(m.collapsed_edges, 2u);  // the poles
+  EXPECT_GT(m.dropped_triangles, 0u);
+  EXPECT_TRUE(m.closed());
+  const Tape surface = implicit_sphere();
+  const MeshValidity v = validate(m.mesh, {.surface = &surface, .face_samples = 4});
+  EXPECT_TRUE(v.valid()) << describe(v);
+  EXPECT_EQ(v.euler_characteristic, 2);
+  EXPECT_GT(v.volume, 0.0);
+  // Mesh -> surface (vertices and face samples) and surface -> mesh, both within the bound.
+  EXPECT_LE(v.surface.max_vertex_bound, m.distance_bound);
+  EXPECT_LE(v.surface.max_face_bound, m.distance_bound);
+  EXPECT_LE(surface_to_mesh(sphere, m.mesh, 1500, 7), m.distance_bound);
+  // The bound is not loose by orders of magnitude: the true error is a sizeable part of it.
+  EXPECT_GT(v.surface.max_face_estimate, 0.05 * m.distance_bound);
+}
+
+TEST(AdaptiveMesh, TorusIsAClosedGenusOneMesh) {
+  const AdaptiveMesh m = mesh_adaptive({torus(1.0, 0.3)}, {.tolerance = 1e-3});
+  EXPECT_TRUE(m.closed());
+  EXPECT_EQ(m.glued_edges, 4u);
+  const MeshValidity v = validate(m.mesh);
+  EXPECT_TRUE(v.valid()) << describe(v);
+  EXPECT_EQ(v.euler_characteristic, 0);
+  EXPECT_LE(surface_to_mesh(torus(1.0, 0.3), m.mesh, 1000, 3), m.distance_bound);
+}
+
+// Claim 37: with Snyder's criterion w(S(X)) <= delta alone, every leaf's samples fit in a box
+// of width <= delta (so every triangle's corners do), and the mesh is conforming: every edge
+// of the closed torus belongs to exactly two triangles.
+TEST(AdaptiveMesh, Claim37BoxWidthCriterionAndConformingMesh) {
+  const double delta = 0.05;
+  const AdaptiveMesh m = mesh_adaptive({torus(1.0, 0.3)}, {.tolerance = delta, .bound = LeafBound::BoxWidth});
+  EXPECT_LE(m.distance_bound, delta);
+  for (const auto& t : m.mesh.triangles) {
+    double width2 = 0;
+    for (int j = 0; j < 3; ++j) {
+      const double lo = std::min({m.mesh.vertices[t[0]][j], m.mesh.vertices[t[1]][j], m.mesh.vertices[t[2]][j]});
+      const double hi = std::max({m.mesh.vertices[t[0]][j], m.mesh.vertices[t[1]][j], m.mesh.vertices[t[2]][j]});
+      width2 += (hi - lo) * (hi - lo);
+    }
+    ASSERT_LE(std::sqrt(width2), delta);
+  }
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+  for (const auto& t : m.mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++edges[std::minmax(t[k], t[(k + 1) % 3])];
+  for (const auto& [e, n] : edges) ASSERT_EQ(n, 2);
+  EXPECT_EQ(m.boundary_edges, 0u);
+}
+
+// The linear-interpolation bound shrinks with the square of the leaf size, so a 100x smaller
+// tolerance costs about 100x the leaves, where the box width alone costs about 10,000x.
+TEST(AdaptiveMesh, InterpolationBoundConvergesQuadratically) {
+  const SurfacePatch t = torus(1.0, 0.3);
+  const AdaptiveMesh coarse = mesh_adaptive({t}, {.tolerance = 1e-2});
+  const AdaptiveMesh fine = mesh_adaptive({t}, {.tolerance = 1e-4});
+  const double ratio = static_cast<double>(fine.leaves) / static_cast<double>(coarse.leaves);
+  EXPECT_GT(ratio, 30.0);
+  EXPECT_LT(ratio, 400.0);
+  const AdaptiveMesh box = mesh_adaptive({t}, {.tolerance = 1e-2, .bound = LeafBound::BoxWidth});
+  EXPECT_LT(coarse.leaves * 3, box.leaves);
+}
+
+// Random kd-trees (a pseudo-random refine criterion) over a flat patch: the triangulation
+// covers the rectangle exactly once (area), has no T-junction (edges with one triangle lie
+// on the rectangle's boundary), no degenerate triangle, and every other edge has two.
+TEST(AdaptiveMesh, RandomKdTreesTriangulateConformingly) {
+  for (unsigned seed = 1; seed <= 12; ++seed) {
+    const SurfacePatch plane{cat({U * 2.0, V, Fn(0.0)}), Interval(0, 1), Interval(0, 1)};
+    AdaptiveMeshOptions o{.tolerance = 1.0, .max_depth = 7, .glue_edges = true};
+    o.refine = [seed](std::size_t, const Interval& u, const Interval& v) {
+      // splitmix64 of the leaf's corner bits: a random tree that is a function of the leaf.
+      std::uint64_t h = std::bit_cast<std::uint64_t>(u.lo()) ^ (std::bit_cast<std::uint64_t>(v.lo()) * 3) ^
+                        (std::bit_cast<std::uint64_t>(u.hi()) * 5) ^ (std::bit_cast<std::uint64_t>(v.hi()) * 7) ^ seed;
+      h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ULL;
+      h = (h ^ (h >> 27)) * 0x94D049BB133111EBULL;
+      h ^= h >> 31;
+      const double size = (u.hi() - u.lo()) * (v.hi() - v.lo());
+      return size > 1.0 / 16 || (h % 100 < 45 && size > 1.0 / 4096);
+    };
+    const AdaptiveMesh m = mesh_adaptive({plane}, o);
+    ASSERT_GT(m.leaves, 20u) << "seed " << seed;
+    double area = 0;
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+    for (const auto& t : m.mesh.triangles) {
+      const Vec3 a = m.mesh.vertices[t[0]], b = m.mesh.vertices[t[1]], c = m.mesh.vertices[t[2]];
+      const double z = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+      ASSERT_GT(std::abs(z), 0.0) << "degenerate triangle, seed " << seed;
+      area += 0.5 * std::abs(z);
+      for (int k = 0; k < 3; ++k) ++edges[std::minmax(t[k], t[(k + 1) % 3])];
+    }
+    EXPECT_NEAR(area, 2.0, 1e-12) << "seed " << seed;
+    auto on_boundary = [](const Vec3& p) { return p[0] == 0 || p[0] == 2 || p[1] == 0 || p[1] == 1; };
+    for (const auto& [e, n] : edges) {
+      ASSERT_LE(n, 2);
+      if (n == 1) {
+        const Vec3 &a = m.mesh.vertices[e.first], &b = m.mesh.vertices[e.second];
+        ASSERT_TRUE(on_boundary(a) && on_boundary(b) && (a[0] == b[0] || a[1] == b[1])) << "seed " << seed;
+      }
+    }
+    EXPECT_EQ(m.collapsed_edges, 0u);
+    EXPECT_EQ(m.glued_edges, 0u);
+  }
+}
+
+// A cube as six patches with independent kd-trees: the twelve shared edges are glued by
+// geometry, so the mesh is closed as written, and orientation comes from the geometry.
+TEST(AdaptiveMesh, SixGluedFacesMakeAClosedOutwardCube) {
+  std::vector<SurfacePatch> faces;
+  for (int k = 0; k < 3; ++k)
+    for (double side : {-1.0, 1.0}) {
+      Fn c[3];
+      c[k] = Fn(side);
+      c[(k + 1) % 3] = U * 2.0 - 1.0;
+      c[(k + 2) % 3] = V * 2.0 - 1.0;
+      faces.push_back({cat({c[0], c[1], c[2]}), Interval(0, 1), Interval(0, 1)});
+    }
+  AdaptiveMeshOptions o{.tolerance = 1e-3};
+  o.refine = [](std::size_t patch, const Interval& u, const Interval& v) {  // unequal kd-trees
+    return u.hi() - u.lo() > 1.0 / (2 + patch) || v.hi() - v.lo() > 1.0 / (3 + patch);
+  };
+  const AdaptiveMesh m = mesh_adaptive(faces, o);
+  EXPECT_EQ(m.glued_edges, 24u);
+  EXPECT_TRUE(m.closed());
+  const MeshValidity v = validate(m.mesh);
+  EXPECT_TRUE(v.valid()) << describe(v);
+  EXPECT_EQ(v.euler_characteristic, 2);
+  EXPECT_NEAR(v.volume, 8.0, 1e-12);
+}
+
+TEST(AdaptiveMesh, UnflaggedCylinderSeamIsFoundByGeometry) {
+  const Fn a = 2 * kPi * U;
+  const SurfacePatch tube{cat({cos(a), sin(a), V}), Interval(0, 1), Interval(0, 1)};
+  const AdaptiveMesh m = mesh_adaptive({tube}, {.tolerance = 1e-3});
+  EXPECT_EQ(m.glued_edges, 2u);
+  EXPECT_FALSE(m.closed());  // open at both ends
+  const MeshValidity v = validate(m.mesh, {.check_self_intersections = false});
+  EXPECT_EQ(v.components, 1u);
+  EXPECT_EQ(v.euler_characteristic, 0);  // an annulus
+  EXPECT_EQ(v.nonmanifold_edges, 0u);
+  EXPECT_EQ(v.misoriented_edges, 0u);
+}
+
+TEST(AdaptiveMesh, SameMeshForAnyThreadCount) {
+  const AdaptiveMesh one = mesh_adaptive({torus(1.0, 0.4)}, {.tolerance = 1e-3, .threads = 1});
+  const AdaptiveMesh two = mesh_adaptive({torus(1.0, 0.4)}, {.tolerance = 1e-3, .threads = 2});
+  EXPECT_EQ(one.mesh.vertices, two.mesh.vertices);
+  EXPECT_EQ(one.mesh.triangles, two.mesh.triangles);
+  EXPECT_EQ(one.distance_bound, two.distance_bound);
+}
+
+TEST(AdaptiveMesh, LimitsAreReported) {
+  const AdaptiveMesh leaves = mesh_adaptive({unit_sphere()}, {.tolerance = 1e-6, .max_leaves = 500});
+  EXPECT_NE(std::find(leaves.limits_hit.begin(), leaves.limits_hit.end(), "leaves"), leaves.limits_hit.end());
+  EXPECT_GT(leaves.distance_bound, 1e-6);
+  EXPECT_LE(leaves.leaves, 500u);
+  EXPECT_TRUE(leaves.closed());  // still a whole mesh, only coarser
+  const AdaptiveMesh depth = mesh_adaptive({unit_sphere()}, {.tolerance = 1e-6, .max_depth = 4});
+  EXPECT_NE(std::find(depth.limits_hit.begin(), depth.limits_hit.end(), "depth"), depth.limits_hit.end());
+  EXPECT_GT(depth.distance_bound, 1e-6);
+}
+
+TEST(AdaptiveMesh, BadInputIsRejectedWithAMessage) {
+  const SurfacePatch s = unit_sphere();
+  EXPECT_THROW(mesh_adaptive({}, {}), std::invalid_argument);
+  EXPECT_THROW(mesh_adaptive({s}, {.tolerance = 0.0}), std::invalid_argument);
+  EXPECT_THROW(mesh_adaptive({s}, {.tolerance = NAN}), std::invalid_argument);
+  EXPECT_THROW(mesh_adaptive({s}, {.max_depth = 40}), std::invalid_argument);
+  EXPECT_THROW(mesh_adaptive({{cat({U, V})}}, {}), std::invalid_argument);
+  EXPECT_THROW(mesh_adaptive({{cat({U, V, x(2)})}}, {}), std::invalid_argument);
+  EXPECT_THROW(mesh_adaptive({{cat({U, V, V}), Interval(0, 0)}}, {}), std::invalid_argument);
+  try {
+    mesh_adaptive({{cat({U, V, sqrt(U - 0.5)})}}, {.tolerance = 0.1, .max_depth = 6});
+    FAIL() << "expected std::domain_error";
+  } catch (const std::domain_error& e) {
+    EXPECT_NE(std::string(e.what()).find("undefined at (u, v)"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace genmod
