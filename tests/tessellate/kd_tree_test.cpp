@@ -57,6 +57,26 @@ KdTree random_tree(const KdBox& domain, int max_depth, std::mt19937& rng) {
   return t;
 }
 
+// A random tree that splits its dimensions in turn (0, 1, ..., n-1, 0, ...), as the adaptive
+// subdivision of §5.3.1 does; each split keeps both halves or one of them.
+KdTree random_cyclic_tree(const KdBox& domain, int max_depth, std::mt19937& rng) {
+  const std::size_t n = domain.size();
+  KdTree t(domain);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<std::pair<Index, int>> stack{{t.make_root(), 0}};  // node, number of splits above
+  while (!stack.empty()) {
+    const auto [node, level] = stack.back();
+    stack.pop_back();
+    if (level >= max_depth * static_cast<int>(n) || u(rng) > 0.95 - 0.6 * level / (max_depth * static_cast<double>(n)))
+      continue;
+    const auto d = static_cast<std::size_t>(level) % n;
+    const double r = u(rng);
+    for (int s = 0; s < 2; ++s)
+      if (r < 0.7 || (r < 0.85) == (s == 0)) stack.emplace_back(t.add_child(node, d, s), level + 1);
+  }
+  return t;
+}
+
 // Resolution (bits per side) of the coverage grid: at most 4096 cells, and at least the depth
 // of every random tree, so no cell centre lies on a node's boundary.
 int grid_bits(std::size_t dims) { return dims == 1 ? 8 : dims == 2 ? 5 : dims == 3 ? 4 : 3; }
@@ -523,8 +543,11 @@ TEST(KdTreeProject, SplitsAreASubsetOfTheSourceSplitsInTheKeptDimensions) {
   const std::vector<std::vector<std::size_t>> keeps = {{0, 1}, {2, 3}, {0, 2}, {1}, {0, 1, 3}, {0, 1, 2, 3}};
   std::mt19937 rng(6000);
   const Grid g4{4, grid_bits(4)};
-  for (int trial = 0; trial < 10; ++trial) {
-    const KdTree n = random_tree(unit_box(4), g4.bits, rng);
+  std::size_t projected_splits = 0;
+  for (int trial = 0; trial < 16; ++trial) {
+    // Trees that interleave dimensions at random, and trees that split them in turn (as the
+    // intersection kd-tree of Alg 5.4 does), whose projections keep many splits.
+    const KdTree n = trial % 2 == 0 ? random_tree(unit_box(4), g4.bits, rng) : random_cyclic_tree(unit_box(4), g4.bits, rng);
     const std::vector<bool> cn = coverage(n, g4);
     for (const std::vector<std::size_t>& keep : keeps) {
       const KdTree p = project(n, keep);
@@ -534,6 +557,7 @@ TEST(KdTreeProject, SplitsAreASubsetOfTheSourceSplitsInTheKeptDimensions) {
         const auto j = std::find(keep.begin(), keep.end(), s.dim);
         if (j != keep.end()) allowed.insert({s.address.restricted(keep), static_cast<std::size_t>(j - keep.begin())});
       }
+      projected_splits += keep.size() < 4 ? p.splits().size() : 0;
       for (const KdSplit& s : p.splits())
         EXPECT_TRUE(allowed.count(s)) << "projected split of " << s.address.to_string() << " in dimension " << s.dim;
       // The projection of every covered point is covered.
@@ -552,6 +576,8 @@ TEST(KdTreeProject, SplitsAreASubsetOfTheSourceSplitsInTheKeptDimensions) {
       }
     }
   }
+  // The trees are not so mixed that every projection collapses to one leaf.
+  EXPECT_GT(projected_splits, 100u);
 }
 
 TEST(KdTreeProject, DroppingAnUnsplitDimensionKeepsTheTree) {
