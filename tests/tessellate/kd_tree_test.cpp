@@ -279,6 +279,9 @@ TEST(KdTree, Fig524MergeAddOnlyKeepsTheLeafOfT1) {
   }
   // The part of T2's leaf that T1 does not cover.
   EXPECT_EQ(boxes, (std::set<std::vector<double>>{{0, 1, 0, 0.5}, {0.5, 1, 0.5, 1}}));
+  // They share the face y = 0.5, 0.5 <= x <= 1.
+  EXPECT_EQ(t1.neighbours(leaves[0]), std::vector<Index>{leaves[1]});
+  EXPECT_EQ(t1.neighbours(leaves[1]), std::vector<Index>{leaves[0]});
 }
 
 TEST(KdTree, Fig524MergeNoSubdivideGivesTheRoot) {
@@ -340,6 +343,38 @@ TEST(KdTree, InsertNoSubdivideCollapsesTheSubtreeThatWouldCutX) {
   KdTree c = t;
   c.insert_nosubdivide(KdAddress::parse({"111", "0"}));
   EXPECT_EQ(c.splits(), t.splits());
+}
+
+TEST(KdTree, MergesOfDifferentlyInterleavedTrees) {
+  // T1 splits x first and has the leaf x < 0.5; T2 splits y first, then x: leaves (0,0), (1,0).
+  KdTree t1(unit_box(2));
+  t1.add_child(t1.make_root(), 0, 0);
+  KdTree t2(unit_box(2));
+  t2.split(t2.add_child(t2.make_root(), 1, 0), 0);
+  // addonly adds exactly the missing quarter x > 0.5, y < 0.5.
+  KdTree a = t1;
+  merge_addonly(a, t2);
+  EXPECT_EQ(leaf_addresses(a), (std::set<KdAddress>{KdAddress::parse({"0", ""}), KdAddress::parse({"1", "0"})}));
+  // nosubdivide may not split x > 0.5 in y (neither tree has that split): it takes the whole half.
+  KdTree b = t1;
+  merge_nosubdivide(b, t2);
+  EXPECT_EQ(leaf_addresses(b), (std::set<KdAddress>{KdAddress::parse({"0", ""}), KdAddress::parse({"1", ""})}));
+  EXPECT_EQ(b.splits(), t1.splits());
+}
+
+TEST(KdTree, MergeWithItselfChangesNothing) {
+  std::mt19937 rng(77);
+  for (int trial = 0; trial < 5; ++trial) {
+    const KdTree t = random_tree(unit_box(3), 4, rng);
+    KdTree a = t;
+    merge_addonly(a, a);
+    EXPECT_EQ(a.splits(), t.splits());
+    EXPECT_EQ(leaf_addresses(a), leaf_addresses(t));
+    KdTree b = t;
+    merge_nosubdivide(b, b);
+    EXPECT_EQ(b.splits(), t.splits());
+    EXPECT_EQ(leaf_addresses(b), leaf_addresses(t));
+  }
 }
 
 TEST(KdTree, ErrorsNameTheProblem) {
