@@ -269,7 +269,7 @@ KdAddress KdTree::address(Index i) const {
     steps.emplace_back(static_cast<std::size_t>(n.split_dim), n.child[1] == c ? 1 : 0);
   }
   KdAddress a(dims());
-  for (auto it = steps.rbegin(); it != steps.rend(); ++it) a = a.child(it->first, it->second);
+  for (auto it = steps.rbegin(); it != steps.rend(); ++it) a.push(it->first, it->second);
   return a;
 }
 
@@ -341,7 +341,7 @@ KdTree::Index KdTree::leaf_containing(std::span<const double> point) const {
     const double mid = dyadic_coordinate(domain_[d], 2 * a.index(d) + 1, a.depth(d) + 1);
     // On the split plane: the low side if it exists.
     const int side = point[d] < mid ? 0 : point[d] > mid ? 1 : n.child[0] != kNone ? 0 : 1;
-    a = a.child(d, side);
+    a.push(d, side);
     i = n.child[static_cast<std::size_t>(side)];
   }
   return kNone;
@@ -350,44 +350,46 @@ KdTree::Index KdTree::leaf_containing(std::span<const double> point) const {
 std::vector<KdTree::Index> KdTree::neighbours(Index leaf) const {
   check_index(leaf, "neighbours");
   if (!is_leaf(leaf)) throw std::invalid_argument("KdTree::neighbours: node " + std::to_string(leaf) + " is not a leaf");
+  const std::size_t n = dims();
   const GridBox me = grid_box(address(leaf));
-  const std::uint64_t top = std::uint64_t{1} << kGridBits;
+  // Depth-first over the nodes whose closed boxes meet the leaf's, with their grid boxes in a
+  // parallel stack (lo then hi, 2n words per node).
+  std::vector<Index> nodes{root_};
+  std::vector<std::uint64_t> boxes(2 * n, 0);
+  for (std::size_t d = 0; d < n; ++d) boxes[n + d] = std::uint64_t{1} << kGridBits;
+  std::vector<std::uint64_t> box(2 * n);
   std::vector<Index> out;
-  struct Item {
-    Index node;
-    KdAddress address;
-  };
-  for (std::size_t d = 0; d < dims(); ++d) {
+  while (!nodes.empty()) {
+    const Index i = nodes.back();
+    nodes.pop_back();
+    std::copy(boxes.end() - static_cast<std::ptrdiff_t>(2 * n), boxes.end(), box.begin());
+    boxes.resize(boxes.size() - 2 * n);
+    // Count the dimensions in which the node only touches the leaf. Touching in two or more
+    // means every box below meets the leaf in less than a face, so the subtree is skipped.
+    int touching = 0;
+    bool meets = true;
+    for (std::size_t e = 0; e < n && meets; ++e) {
+      const std::uint64_t lo = box[e], hi = box[n + e];
+      meets = lo <= me.hi[e] && me.lo[e] <= hi;
+      touching += (lo == me.hi[e] || hi == me.lo[e]) ? 1 : 0;
+    }
+    if (!meets || touching > 1) continue;
+    const Node& nd = nodes_[static_cast<std::size_t>(i)];
+    if (nd.split_dim < 0) {
+      if (touching == 1) out.push_back(i);  // touching == 0 is the leaf itself
+      continue;
+    }
+    const auto d = static_cast<std::size_t>(nd.split_dim);
+    const std::uint64_t mid = box[d] + (box[n + d] - box[d]) / 2;
     for (int side = 0; side < 2; ++side) {
-      // The face of `leaf` at x_d = c; a neighbour lies on the other side of it.
-      const std::uint64_t c = side == 0 ? me.lo[d] : me.hi[d];
-      if (c == 0 || c == top) continue;  // the domain's boundary
-      std::vector<Item> stack{{root_, KdAddress(dims())}};
-      while (!stack.empty()) {
-        Item it = std::move(stack.back());
-        stack.pop_back();
-        const GridBox g = grid_box(it.address);
-        // Does this node reach the face: touching it from the far side in d and overlapping
-        // the face's extent with positive measure in every other dimension?
-        const bool reaches_d = side == 0 ? (g.lo[d] < c && c <= g.hi[d]) : (g.lo[d] <= c && c < g.hi[d]);
-        bool overlaps_rest = true;
-        for (std::size_t e = 0; e < dims() && overlaps_rest; ++e)
-          if (e != d) overlaps_rest = g.lo[e] < me.hi[e] && me.lo[e] < g.hi[e];
-        if (!reaches_d || !overlaps_rest) continue;
-        const Node& n = nodes_[static_cast<std::size_t>(it.node)];
-        if (n.split_dim < 0) {
-          if ((side == 0 ? g.hi[d] : g.lo[d]) == c) out.push_back(it.node);
-          continue;
-        }
-        const auto sd = static_cast<std::size_t>(n.split_dim);
-        for (int s = 0; s < 2; ++s)
-          if (n.child[static_cast<std::size_t>(s)] != kNone)
-            stack.push_back({n.child[static_cast<std::size_t>(s)], it.address.child(sd, s)});
-      }
+      if (nd.child[static_cast<std::size_t>(side)] == kNone) continue;
+      nodes.push_back(nd.child[static_cast<std::size_t>(side)]);
+      const std::size_t at = boxes.size();
+      boxes.insert(boxes.end(), box.begin(), box.end());
+      boxes[at + (side == 0 ? n + d : d)] = mid;
     }
   }
   std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
 }
 

@@ -85,6 +85,12 @@ class KdAddress {
   friend bool operator==(const KdAddress&, const KdAddress&) = default;
 
  private:
+  friend class KdTree;
+  // child() in place (no copy), unchecked: for the tree's own walks.
+  void push(std::size_t d, int side) {
+    paths_[d].index = paths_[d].index * 2 + static_cast<std::uint64_t>(side);
+    ++paths_[d].depth;
+  }
   struct Path {
     std::uint64_t index = 0;
     int depth = 0;
