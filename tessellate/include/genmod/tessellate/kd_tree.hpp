@@ -30,6 +30,9 @@
 // append and keep every index valid; calls that can remove nodes (insert_*, merge_*) renumber
 // the nodes (depth-first, low child first) and invalidate earlier indices.
 //
+// A KdTree is a value: copies are independent, and const members may run on several threads
+// at once (there is no hidden cache).
+//
 // Errors (a dimension mismatch, a malformed or too deep address, a node that does not exist)
 // throw std::invalid_argument naming the problem.
 #pragma once
@@ -167,7 +170,8 @@ class KdTree {
   // Adds the parts of X (the node named by `address`) that the tree does not cover yet, as
   // maximal nodes, and never splits an existing leaf: a part of X inside a leaf stays as it is.
   // Descending from the root, an empty slot on X's path gets a chain of nodes down to the part
-  // of X in that slot; where X straddles a split, both halves are followed.
+  // of X in that slot; where X straddles a split, both halves are followed (also below X's own
+  // node, so empty slots inside X are filled).
   void insert_addonly(const KdAddress& address);
   // Makes X covered without splitting any existing node: descending along X's path, an empty
   // slot gets a chain down to X, a leaf on the path covers X already, and the first node whose
