@@ -3,6 +3,7 @@
 
 #include "genmod/tessellate/image.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
+#include "genmod/tessellate/kd_tree.hpp"
 #include "genmod/tessellate/lattice.hpp"
 #include "genmod/tessellate/mesh.hpp"
 #include "genmod/tessellate/mesh_io.hpp"
