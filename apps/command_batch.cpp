@@ -75,10 +75,10 @@ int run_batch_command(std::span<const std::string> args) {
   for (const BatchResult& r : rows) {
     failed += r.status == BatchStatus::Error;
     invalid += r.valid && !*r.valid;
+    // An invalid mesh's message says "not valid: why".
     std::printf("%-5s %s -> %s: %zu triangles, %.3f s%s%s%s\n", to_string(r.status), r.name.c_str(),
-                r.output.string().c_str(), r.triangles, r.seconds,
-                r.valid ? (*r.valid ? ", valid" : ", not valid") : "", r.message.empty() ? "" : ": ",
-                r.message.c_str());
+                r.output.string().c_str(), r.triangles, r.seconds, r.valid && *r.valid ? ", valid" : "",
+                r.message.empty() ? "" : ": ", r.message.c_str());
   }
   std::printf("%zu jobs: %zu ok, %zu failed, %zu not valid; report %s\n", rows.size(), rows.size() - failed, failed,
               invalid, report.c_str());

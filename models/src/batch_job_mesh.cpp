@@ -24,9 +24,10 @@ BatchMesh mesh_implicit_job(const Fn& f, const Box3& box, double default_min_fea
   BatchMesh out{std::move(m.mesh), m.stats.max_vertex_error, std::move(m.stats.limits_hit), {}};
   if (m.stats.uncertified_cells)
     out.note = std::to_string(m.stats.uncertified_cells) + " surface cells with uncertified topology";
-  if (m.stats.uncertified_vertices)
-    out.note += (out.note.empty() ? "" : "; ") + std::to_string(m.stats.uncertified_vertices) +
-                " vertices without a certified distance bound";
+  if (m.stats.uncertified_vertices) {
+    if (!out.note.empty()) out.note += "; ";
+    out.note += std::to_string(m.stats.uncertified_vertices) + " vertices without a certified distance bound";
+  }
   return out;
 }
 

@@ -153,7 +153,10 @@ void set_value(JobDescription& job, const std::string& key, double v) {
 
 std::string parameter_list(const std::vector<ModelParameter>& parameters) {
   std::string out;
-  for (const ModelParameter& p : parameters) out += (out.empty() ? "" : ", ") + p.name;
+  for (const ModelParameter& p : parameters) {
+    if (!out.empty()) out += ", ";
+    out += p.name;
+  }
   return out.empty() ? "none" : out;
 }
 
@@ -338,7 +341,10 @@ std::string to_line(const JobDescription& job) {
   if (job.res) add("res", std::to_string(*job.res));
   if (job.box) {
     std::string box;
-    for (double v : *job.box) box += (box.empty() ? "" : ",") + format_double(v);
+    for (double v : *job.box) {
+      if (!box.empty()) box += ',';
+      box += format_double(v);
+    }
     add("box", box);
   }
   if (job.min_feature) add("min_feature", format_double(*job.min_feature));

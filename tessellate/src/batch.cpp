@@ -155,7 +155,10 @@ std::string batch_report_csv(const std::vector<BatchResult>& rows) {
   std::string out = "name,output,status,triangles,vertices,seconds,error_bound,limits_hit,valid,message\n";
   for (const BatchResult& r : rows) {
     std::string limits;
-    for (const std::string& limit : r.limits_hit) limits += (limits.empty() ? "" : ";") + limit;
+    for (const std::string& limit : r.limits_hit) {
+      if (!limits.empty()) limits += ';';
+      limits += limit;
+    }
     out += csv_field(r.name) + ',' + csv_field(r.output.string()) + ',' + to_string(r.status) + ',' +
            std::to_string(r.triangles) + ',' + std::to_string(r.vertices) + ',' + shortest(r.seconds) + ',' +
            (r.error_bound ? shortest(*r.error_bound) : std::string()) + ',' + csv_field(limits) + ',' +
