@@ -50,7 +50,9 @@ int run_batch_command(std::span<const std::string> args) {
   if (!dir) throw UsageError("missing output directory (-o DIR)");
   const int threads = a.int_value({"--threads"}, 0, 0, 1024);
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(jobs_file, ec)) throw UsageError("jobs file '" + jobs_file + "' does not exist");
+  // Not only regular files: a pipe (<(generate_jobs)) is a fine jobs file.
+  if (!std::filesystem::exists(jobs_file, ec)) throw UsageError("jobs file '" + jobs_file + "' does not exist");
+  if (std::filesystem::is_directory(jobs_file, ec)) throw UsageError("jobs file '" + jobs_file + "' is a directory");
 
   // A malformed jobs file stops everything before any work (the message names the line).
   const std::vector<models::JobDescription> descriptions = models::read_jobs_file(jobs_file);

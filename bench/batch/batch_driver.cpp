@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -42,19 +43,29 @@ std::string jobs_text(int res) {
 
 struct Run {
   double seconds = 0.0;
+  double cpu_seconds = 0.0;  // of all threads: on a shared machine, cpu / wall shows the parallelism obtained
   std::size_t triangles = 0, failed = 0;
+  double job_seconds = 0.0, longest_job = 0.0;  // sum and largest of the rows' seconds
+  std::string longest_name;
 };
 
 Run run_once(const std::vector<models::JobDescription>& jobs, const fs::path& dir, int threads, bool check) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
   const std::vector<BatchResult> rows =
       run_batch(models::make_batch_jobs(jobs, dir), {.threads = threads, .validate = check});
   Run run;
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   for (const BatchResult& r : rows) {
     run.triangles += r.triangles;
+    run.job_seconds += r.seconds;
+    if (r.seconds > run.longest_job) {
+      run.longest_job = r.seconds;
+      run.longest_name = r.name;
+    }
     if (r.status == BatchStatus::Error) {
       ++run.failed;
       std::fprintf(stderr, "job failed: %s: %s\n", r.name.c_str(), r.message.c_str());
@@ -102,11 +113,18 @@ int main(int argc, char** argv) {
       const Run run = run_once(jobs, base / ("threads" + std::to_string(t + 1)), t + 1, check);
       if (k == 0 || run.seconds < best[t].seconds) best[t] = run;
     }
-  std::printf("%-9s %10s %12s %14s %16s\n", "threads", "seconds", "models/s", "triangles", "triangles/s");
+  std::printf("%-9s %10s %10s %12s %14s %16s\n", "threads", "seconds", "cpu s", "models/s", "triangles",
+              "triangles/s");
   for (int t = 0; t < 2; ++t)
-    std::printf("%-9d %10.3f %12.2f %14zu %16.0f\n", t + 1, best[t].seconds, jobs.size() / best[t].seconds,
-                best[t].triangles, best[t].triangles / best[t].seconds);
+    std::printf("%-9d %10.3f %10.3f %12.2f %14zu %16.0f\n", t + 1, best[t].seconds, best[t].cpu_seconds,
+                static_cast<double>(jobs.size()) / best[t].seconds, best[t].triangles,
+                static_cast<double>(best[t].triangles) / best[t].seconds);
   std::printf("2-vs-1 speedup: %.2fx (fastest of %d runs each)\n", best[0].seconds / best[1].seconds, repeat);
+  // Jobs are not split: the longest one bounds the speedup (sum / max(longest, sum / 2)).
+  const Run& serial = best[0];
+  std::printf("longest job: %s, %.3f s of %.3f s (1 thread): 2 threads can give at most %.2fx\n",
+              serial.longest_name.c_str(), serial.longest_job, serial.job_seconds,
+              serial.job_seconds / std::max(serial.longest_job, serial.job_seconds / 2));
 
   std::size_t differ = 0;
   for (const models::JobDescription& j : jobs)
