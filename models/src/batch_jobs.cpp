@@ -183,8 +183,62 @@ std::string substitute(const std::string& pattern, const std::map<std::string, d
   return out;
 }
 
-// The parse of one line: the jobs it expands to (none for a blank or comment line).
+// The kind of the line's model; its parameters (nullptr for a .vm file, which has none).
+const std::vector<ModelParameter>* classify_model(JobDescription& base, const std::string& where) {
+  if (base.model.size() > 3 && base.model.compare(base.model.size() - 3, 3, ".vm") == 0) {
+    base.kind = JobModelKind::ModelFile;
+    return nullptr;
+  }
+  for (const Model& m : gallery())
+    if (m.name == base.model) {
+      base.kind = JobModelKind::Parametric;
+      return &m.parameters;
+    }
+  if (const ImplicitModel* implicit = find_implicit_model(base.model)) {
+    base.kind = JobModelKind::Implicit;
+    return &implicit->parameters;
+  }
+  throw JobsFileError(where + ": unknown model '" + printable(base.model, 80) +
+                      "' (not in the gallery or the implicit gallery, see `genmod list`, and not a .vm file)");
+}
+
+using NumericKeys = std::vector<std::pair<std::string, std::vector<double>>>;  // in line order
+
+// Every combination of the numeric keys' values as a job, the last key varying fastest.
 // `room`: how many more jobs the file may have (of `max_jobs`).
+std::vector<JobDescription> expand(const JobDescription& base, const NumericKeys& numeric, const std::string& out,
+                                   const std::string& where, std::size_t room, std::size_t max_jobs) {
+  std::size_t combinations = 1;
+  for (const auto& [key, values] : numeric) {
+    if (values.size() > 1 && out.find("{" + key + "}") == std::string::npos)
+      throw JobsFileError(where + ": " + key + " is swept, so out= must contain {" + key +
+                          "} (each job needs its own file)");
+    combinations *= values.size();
+    if (combinations > room)
+      throw JobsFileError(where + ": too many jobs (more than the limit max_jobs = " + std::to_string(max_jobs) + ")");
+  }
+  std::vector<JobDescription> jobs;
+  for (std::size_t c = 0; c < combinations; ++c) {
+    JobDescription job = base;
+    std::map<std::string, double> keys;
+    std::size_t rest = c;
+    for (std::size_t k = numeric.size(); k-- > 0;) {
+      const auto& [key, values] = numeric[k];
+      const double v = values[rest % values.size()];
+      rest /= values.size();
+      keys[key] = v;
+      set_value(job, key, v);
+    }
+    job.output = substitute(out, keys, where);
+    if (!mesh_format(job.output))
+      throw JobsFileError(where + ": out='" + printable(job.output, 120) +
+                          "': unknown mesh extension (use .obj, .ply, .stl or .off)");
+    jobs.push_back(std::move(job));
+  }
+  return jobs;
+}
+
+// The parse of one line: the jobs it expands to (none for a blank or comment line).
 std::vector<JobDescription> parse_line(std::string_view line, const std::string& where, std::size_t room,
                                        std::size_t max_jobs) {
   const std::vector<Token> tokens = tokenize(line, where);
@@ -194,25 +248,10 @@ std::vector<JobDescription> parse_line(std::string_view line, const std::string&
   if (!tokens[0].quoted_before_equals && base.model.find('=') != std::string::npos)
     throw JobsFileError(where + ": the line starts with '" + printable(base.model, 80) +
                         "'; a job line starts with the model (a gallery name or a .vm file)");
-  const Model* parametric = nullptr;
-  const ImplicitModel* implicit = nullptr;
-  if (base.model.size() > 3 && base.model.compare(base.model.size() - 3, 3, ".vm") == 0) {
-    base.kind = JobModelKind::ModelFile;
-  } else {
-    for (const Model& m : gallery())
-      if (m.name == base.model) parametric = &m;
-    implicit = parametric ? nullptr : find_implicit_model(base.model);
-    if (!parametric && !implicit)
-      throw JobsFileError(where + ": unknown model '" + printable(base.model, 80) +
-                          "' (not in the gallery or the implicit gallery, see `genmod list`, and not a .vm file)");
-    base.kind = parametric ? JobModelKind::Parametric : JobModelKind::Implicit;
-  }
-  const std::vector<ModelParameter>* parameters =
-      parametric ? &parametric->parameters : implicit ? &implicit->parameters : nullptr;
-
+  const std::vector<ModelParameter>* parameters = classify_model(base, where);
   std::map<std::string, bool> seen;
   std::optional<std::string> out;
-  std::vector<std::pair<std::string, std::vector<double>>> numeric;  // in line order
+  NumericKeys numeric;
   for (std::size_t t = 1; t < tokens.size(); ++t) {
     const std::string& text = tokens[t].text;
     const std::size_t eq = tokens[t].quoted_before_equals ? std::string::npos : text.find('=');
@@ -256,36 +295,7 @@ std::vector<JobDescription> parse_line(std::string_view line, const std::string&
   if (out->empty()) throw JobsFileError(where + ": out= is empty");
   if (base.kind == JobModelKind::ModelFile && !seen["min_feature"])
     throw JobsFileError(where + ": missing min_feature=H (the smallest cell edge) for the .vm model");
-  std::size_t combinations = 1;
-  for (const auto& [key, values] : numeric) {
-    if (values.size() > 1 && out->find("{" + key + "}") == std::string::npos)
-      throw JobsFileError(where + ": " + key + " is swept, so out= must contain {" + key +
-                          "} (each job needs its own file)");
-    combinations *= values.size();
-    if (combinations > room) break;
-  }
-  if (combinations > room)
-    throw JobsFileError(where + ": too many jobs (more than the limit max_jobs = " + std::to_string(max_jobs) + ")");
-
-  std::vector<JobDescription> jobs;
-  for (std::size_t c = 0; c < combinations; ++c) {
-    JobDescription job = base;
-    std::map<std::string, double> keys;
-    std::size_t rest = c;
-    for (std::size_t k = numeric.size(); k-- > 0;) {  // the last key varies fastest
-      const auto& [key, values] = numeric[k];
-      const double v = values[rest % values.size()];
-      rest /= values.size();
-      keys[key] = v;
-      set_value(job, key, v);
-    }
-    job.output = substitute(*out, keys, where);
-    if (!mesh_format(job.output))
-      throw JobsFileError(where + ": out='" + printable(job.output, 120) +
-                          "': unknown mesh extension (use .obj, .ply, .stl or .off)");
-    jobs.push_back(std::move(job));
-  }
-  return jobs;
+  return expand(base, numeric, *out, where, room, max_jobs);
 }
 
 }  // namespace
