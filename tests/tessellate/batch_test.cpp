@@ -1,6 +1,6 @@
-// The batch engine: rows in job order, a failing job (a throw, a failed write) reported in its
-// row while the others finish, the same files bitwise for 1 and 2 threads, validation of the
-// files as written, and the CSV report's quoting.
+// The batch engine: rows in job order, as many jobs at once as threads, a failing job (a throw,
+// a failed write) reported in its row while the others finish, the same files bitwise for 1
+// and 2 threads, validation of the files as written, and the CSV report's quoting.
 #include "genmod/kernel/fn.hpp"
 #include "genmod/tessellate/batch.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
@@ -8,8 +8,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <condition_variable>
 #include <filesystem>
 #include <fstream>
+#include <mutex>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -146,6 +149,38 @@ TEST_F(Batch, OneAndTwoThreadsWriteBitwiseTheSameFiles) {
     EXPECT_EQ(rows1[i].error_bound, rows2[i].error_bound);
     EXPECT_EQ(rows1[i].valid, rows2[i].valid);
   }
+}
+
+// Two jobs that each wait for the other to have started: with two threads both finish, with
+// one thread the first to run gives up (after `patience`), which shows the cap is kept.
+std::vector<BatchResult> run_rendezvous(const fs::path& dir, int threads, std::chrono::milliseconds patience) {
+  std::mutex lock;
+  std::condition_variable changed;
+  int started = 0;
+  auto job = [&](const std::string& name) {
+    return BatchJob{name, dir / (name + ".obj"), [&, patience] {
+                      std::unique_lock<std::mutex> hold(lock);
+                      ++started;
+                      changed.notify_all();
+                      if (!changed.wait_for(hold, patience, [&] { return started == 2; }))
+                        throw std::runtime_error("the other job did not start");
+                      return BatchMesh{octahedron(1.0), {}, {}, {}};
+                    }};
+  };
+  return run_batch({job("a"), job("b")}, {.threads = threads, .validate = false});
+}
+
+TEST_F(Batch, TheThreadCountIsHowManyJobsRunAtOnce) {
+  // Generous: a loaded machine may be slow to start the second worker.
+  const std::vector<BatchResult> two = run_rendezvous(dir_, 2, std::chrono::seconds(60));
+  EXPECT_EQ(two[0].status, BatchStatus::Ok) << two[0].message;
+  EXPECT_EQ(two[1].status, BatchStatus::Ok) << two[1].message;
+  fs::remove_all(dir_);
+  fs::create_directories(dir_);
+  const std::vector<BatchResult> one = run_rendezvous(dir_, 1, std::chrono::milliseconds(200));
+  const int failed = (one[0].status == BatchStatus::Error) + (one[1].status == BatchStatus::Error);
+  EXPECT_EQ(failed, 1);
+  EXPECT_EQ(one[0].status == BatchStatus::Error ? one[0].message : one[1].message, "the other job did not start");
 }
 
 TEST_F(Batch, AFailedWriteIsTheJobsError) {
