@@ -6,6 +6,7 @@
 #include "genmod/tessellate/mesh_io.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -92,6 +93,14 @@ double number(const std::string& key, const std::string& text, const std::string
   return *v;
 }
 
+// v rounded to 15 significant digits, so that sweep values (and the output names made from
+// them) are the decimals a user expects: 0.1:0.7:4 gives 0.3, not 0.30000000000000004.
+double fifteen_digits(double v) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, v, std::chars_format::general, 15).ptr;
+  return parse_double(std::string_view(text, static_cast<std::size_t>(end - text))).value_or(v);
+}
+
 // A value or a sweep LO:HI:COUNT, as the list of values it stands for.
 std::vector<double> values_of(const std::string& key, const std::string& text, const std::string& where) {
   const std::size_t first = text.find(':');
@@ -106,9 +115,11 @@ std::vector<double> values_of(const std::string& key, const std::string& text, c
     throw JobsFileError(where + ": " + key + " sweep count must be an integer in 2..1000000, got '" +
                         text.substr(second + 1) + "'");
   const auto n = static_cast<std::size_t>(count);
-  std::vector<double> values(n);
-  for (std::size_t i = 0; i < n; ++i)
-    values[i] = i + 1 == n ? hi : lo + static_cast<double>(i) * (hi - lo) / static_cast<double>(n - 1);
+  std::vector<double> values{lo};
+  values.reserve(n);
+  for (std::size_t i = 1; i + 1 < n; ++i)
+    values.push_back(fifteen_digits(lo + static_cast<double>(i) * (hi - lo) / static_cast<double>(n - 1)));
+  values.push_back(hi);
   return values;
 }
 

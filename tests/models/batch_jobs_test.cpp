@@ -75,6 +75,18 @@ TEST(JobsFile, SweepsExpandToEveryCombinationWithPlaceholdersSubstituted) {
   for (int i = 0; i < 6; ++i) EXPECT_EQ(jobs[5 + i].output, expected[i]);
   EXPECT_EQ(jobs[10].parameters.at("minor_radius"), 0.3);
   EXPECT_EQ(jobs[10].res, 16);
+  // Values between the ends are rounded to 15 digits: the names are the expected decimals.
+  const std::vector<JobDescription> tenths = parse_jobs("sphere radius=0.1:0.7:4 out=s{radius}.obj", "j");
+  ASSERT_EQ(tenths.size(), 4u);
+  EXPECT_EQ(tenths[1].output, "s0.3.obj");
+  EXPECT_EQ(tenths[1].parameters.at("radius"), 0.3);
+  EXPECT_EQ(tenths[2].output, "s0.5.obj");
+  // The ends are the numbers as written, all 17 digits kept.
+  const std::vector<JobDescription> exact =
+      parse_jobs("sphere radius=0.10000000000000002:0.30000000000000004:3 out=s{radius}.obj", "j");
+  EXPECT_EQ(exact[0].parameters.at("radius"), 0.10000000000000002);
+  EXPECT_EQ(exact[2].parameters.at("radius"), 0.30000000000000004);
+  EXPECT_EQ(exact[1].output, "s0.2.obj");
 }
 
 TEST(JobsFile, ErrorsNameTheFileTheLineAndTheProblem) {

@@ -19,6 +19,7 @@
 //                   directory unless absolute. {KEY} is replaced by the job's value of KEY
 //                   (any numeric key on the line, printed as the shortest decimal that reads
 //                   back to the same double, e.g. {major_radius} -> 1.25, {res} -> 32).
+//                   Braces are for placeholders only (a lone '{' or '}' is an error).
 //   res=N           gallery models: lattice samples per direction, an integer in 3..4096
 //                   (default 64).
 //   box=x0,y0,z0,x1,y1,z1   implicit models: the region (default: the gallery model's box,
@@ -34,7 +35,8 @@
 // \\ inside) to hold spaces, '#', '=' or quotes.
 //
 // Sweeps: a numeric value written LO:HI:COUNT (COUNT an integer >= 2) stands for COUNT
-// values LO + i (HI - LO) / (COUNT - 1), i = 0 .. COUNT - 1 (the last is HI exactly), e.g.
+// values LO + i (HI - LO) / (COUNT - 1), i = 0 .. COUNT - 1, those between LO and HI rounded
+// to 15 significant digits (0.1:0.7:4 -> 0.1, 0.3, 0.5, 0.7, not 0.30000000000000004), e.g.
 // major_radius=1:2:5 -> 1, 1.25, 1.5, 1.75, 2. A line with sweeps expands to one job per
 // combination, the first swept key varying slowest. Every swept key must appear as {KEY}
 // in out=, so the output names differ (res sweeps must give integers).
