@@ -22,6 +22,8 @@
 // Threads: `threads` caps the whole run (tbb::global_control for its duration, and the jobs
 // run in a tbb::task_arena of that many slots), so meshers that are parallel themselves
 // (mesh_implicit, validate) share the same cores instead of oversubscribing the machine.
+// global_control is process-wide: while a run with threads > 0 lasts, other TBB work in the
+// process is capped too. threads = 0 sets no cap.
 #pragma once
 
 #include "genmod/tessellate/mesh.hpp"
