@@ -29,6 +29,7 @@ extern const Command kListCommand;
 extern const Command kMeshCommand;
 extern const Command kPreviewCommand;
 extern const Command kCheckCommand;
+extern const Command kBatchCommand;
 
 // genmod mesh MODEL.vm ...: the implicit path of the mesh command.
 int run_mesh_implicit(std::span<const std::string> args);

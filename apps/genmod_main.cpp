@@ -10,8 +10,8 @@
 namespace genmod::app {
 namespace {
 
-constexpr std::array<const Command*, 6> kCommands{&kRenderCommand, &kInfoCommand,    &kListCommand,
-                                                  &kMeshCommand,   &kPreviewCommand, &kCheckCommand};
+constexpr std::array<const Command*, 7> kCommands{&kRenderCommand,  &kInfoCommand,  &kListCommand, &kMeshCommand,
+                                                  &kPreviewCommand, &kCheckCommand, &kBatchCommand};
 
 bool is_help(const std::string& s) { return s == "--help" || s == "-h" || s == "help"; }
 

@@ -1,6 +1,7 @@
 // The public API of the tessellate layer.
 #pragma once
 
+#include "genmod/tessellate/batch.hpp"
 #include "genmod/tessellate/image.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/kd_tree.hpp"
