@@ -10,8 +10,6 @@
 namespace genmod::models {
 namespace {
 
-constexpr int kDefaultRes = 64;  // as `genmod mesh`
-
 BatchMesh mesh_implicit_job(const Fn& f, const Box3& box, double default_min_feature, const JobDescription& job) {
   ImplicitMeshSettings s;
   s.min_feature = job.min_feature.value_or(default_min_feature);
@@ -61,7 +59,17 @@ BatchMesh run_description(const JobDescription& job) {
 }  // namespace
 
 BatchMesh mesh_gallery_job(const Model& model, const Fn& surface, const JobDescription& job) {
-  return {mesh_model(model, surface, static_cast<std::size_t>(job.res.value_or(kDefaultRes))), std::nullopt, {}, {}};
+  if (job.res && job.tolerance)
+    throw std::invalid_argument("genmod: res= (uniform lattice) and tolerance= (adaptive) exclude each other");
+  if (job.res) return {mesh_model(model, surface, static_cast<std::size_t>(*job.res)), std::nullopt, {}, {}};
+  // As `genmod mesh`: adaptive, by default within 0.001 of the model's size.
+  AdaptiveMeshOptions options;
+  options.tolerance = job.tolerance.value_or(0.0) > 0.0 ? *job.tolerance : 1e-3 * model_extent(model, surface);
+  options.max_seconds = job.max_seconds.value_or(0.0);
+  AdaptiveMesh m = mesh_model_adaptive(model, surface, options);
+  BatchMesh out{std::move(m.mesh), m.distance_bound, std::move(m.limits_hit), {}};
+  if (!m.closed()) out.note = std::to_string(m.boundary_edges) + " boundary edges (open surface)";
+  return out;
 }
 
 BatchJob make_batch_job(const JobDescription& job, const std::filesystem::path& output_dir) {

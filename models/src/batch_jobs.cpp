@@ -24,8 +24,8 @@ struct SettingKey {
 };
 constexpr SettingKey kSettings[] = {{"out", KeyUse::Any},          {"res", KeyUse::Parametric},
                                     {"box", KeyUse::Implicit},     {"min_feature", KeyUse::Implicit},
-                                    {"tolerance", KeyUse::Implicit}, {"max_cell", KeyUse::Implicit},
-                                    {"max_cells", KeyUse::Implicit}, {"max_seconds", KeyUse::Implicit}};
+                                    {"tolerance", KeyUse::Any}, {"max_cell", KeyUse::Implicit},
+                                    {"max_cells", KeyUse::Implicit}, {"max_seconds", KeyUse::Any}};
 
 const SettingKey* find_setting(const std::string& key) {
   for (const SettingKey& s : kSettings)

@@ -3,8 +3,8 @@
 // One job per line; everything after a '#' (outside quotes) is a comment; blank lines are
 // skipped. A line is a model followed by KEY=VALUE settings, separated by spaces or tabs:
 //
-//   # gallery (parametric) models: lattice meshes, res = samples per direction
-//   doorknob res=64 bulge_radius=0.9 out=knob.obj
+//   # gallery (parametric) models: adaptive meshes within a tolerance, or lattices (res=)
+//   doorknob tolerance=0.001 bulge_radius=0.9 out=knob.obj
 //   torus res=32 major_radius=1:2:5 out=torus_{major_radius}.ply
 //   # implicit gallery models and .vm files: mesh_implicit in a box
 //   tanglecube min_feature=0.1 out=tangle_gallery.off
@@ -20,13 +20,16 @@
 //                   (any numeric key on the line, printed as the shortest decimal that reads
 //                   back to the same double, e.g. {major_radius} -> 1.25, {res} -> 32).
 //                   Braces are for placeholders only (a lone '{' or '}' is an error).
-//   res=N           gallery models: lattice samples per direction, an integer in 3..4096
-//                   (default 64).
+//   tolerance=E     gallery models: the adaptive mesher's distance bound, >= 0 (absent or 0:
+//                   0.001 of the model's size); implicit models: the vertex tolerance.
+//   res=N           gallery models: a uniform lattice instead, samples per direction, an
+//                   integer in 3..4096 (not with tolerance=).
 //   box=x0,y0,z0,x1,y1,z1   implicit models: the region (default: the gallery model's box,
 //                   or -1,-1,-1,1,1,1 for a .vm file); x0 < x1, y0 < y1, z0 < z1.
 //   min_feature=H   implicit models: smallest cell edge, > 0 (required for a .vm file;
 //                   default: the gallery model's).
-//   tolerance=E, max_cell=C, max_seconds=S   implicit models: >= 0 (0 = the mesher's default).
+//   max_cell=C      implicit models: >= 0 (0 = the mesher's default).
+//   max_seconds=S   the mesher's time limit, >= 0 (0 = none); reported when reached.
 //   max_cells=N     implicit models: an integer >= 1, the octree cell limit.
 //   any other key   a parameter of the gallery model (`genmod list` shows them); .vm files
 //                   take none. Values out of a parameter's range fail the job when it runs.
