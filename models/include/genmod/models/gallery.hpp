@@ -42,6 +42,14 @@ struct ModelParameter {
 
 using ParameterValues = std::map<std::string, double>;
 
+// One parametric surface of (u, v) = (x(0), x(1)) over u x v; a periodic axis closes the
+// surface across its ends. Oriented by its parameters: S_u x S_v points out of the object.
+struct ModelPatch {
+  Fn surface;
+  Interval u = Interval(0, 1), v = Interval(0, 1);
+  bool periodic_u = false, periodic_v = false;
+};
+
 struct Model {
   std::string name, description;
   std::vector<ModelParameter> parameters;
@@ -54,6 +62,11 @@ struct Model {
   // A solid S(u, v, w) with w in `w` (three inputs) instead of a surface.
   bool solid = false;
   Interval w = Interval(0.0, 1.0);
+  // Further surfaces of the same object (an empty function or an empty list: none), from the
+  // same complete parameter map: the plate's top and bottom faces, the bear's hairs. Where
+  // the object is closed, each edge of a patch coincides geometrically with an edge of the
+  // main surface or of another patch (a mesher glues them). Throws like `build`.
+  std::function<std::vector<ModelPatch>(const ParameterValues&)> extra_patches;
 };
 
 // All models, in a fixed order.
@@ -70,6 +83,11 @@ ParameterValues resolve_parameters(const std::string& model_name, const std::vec
                                    const ParameterValues& overrides);
 // model.build(resolve_parameters(model, overrides)).
 Fn build_model(const Model& model, const ParameterValues& overrides = {});
+// Every surface of the object, for meshers: the main surface (`surface`, built from `p` by
+// model.build, with the model's domain and periodic flags) first, then model.extra_patches(p).
+// `p` is a complete parameter map (resolve_parameters). Not for solids (std::invalid_argument).
+std::vector<ModelPatch> model_patches(const Model& model, const Fn& surface, const ParameterValues& p);
+
 // The surface meshed with mesh_parametric on an n x n lattice over the model's domain, with
 // the model's periodic axes closed (n >= 3). A solid is meshed as its six boundary faces
 // (u, v or w at either end of its domain), each an n x n lattice patch, oriented outward
@@ -117,6 +135,12 @@ Fn wing_cross(const ParameterValues& p);
 // The furry bear's hair field V(u, v) = (S, S + hair_length normalize(N + kappa S_v)) in R^6,
 // S the scalp (the model surface), N = S_u x S_v.
 Fn furry_bear_hair(const ParameterValues& p);
+// The bear's hairs as surfaces (the model's extra patches): hair_rows rows of 2 hair_rows
+// hairs each, rooted at u = (i + 1/2) / (2 hair_rows), v = (j + 1/2) / hair_rows; each a thin
+// cone of x(0) (around, periodic) and x(1) (root to tip) about the segment of
+// furry_bear_hair, radius hair_radius (1 - x(1)) (open at the root on the scalp, a point at
+// the tip).
+std::vector<ModelPatch> furry_bear_hairs(const ParameterValues& p);
 
 // Offset models of thesis 7.13-7.18 (offsets, offset_plate, spoon, key, screwdriver tips).
 // The offsets surface of any closed planar curve of x(0): (offset_curve(c, r)(u), r) with
@@ -127,12 +151,24 @@ Curve offsets_curve(const ParameterValues& p);
 // The plate's closed cross section and its (inward offset d1, height d2) edge profile.
 Curve offset_plate_cross(const ParameterValues& p);
 Curve offset_plate_profile(const ParameterValues& p);
+// The plate's top (z = thickness / 2, normal +z) and bottom (normal -z) faces: Coons patches
+// bounded by the sides' top and bottom edges (the model's extra patches).
+std::vector<ModelPatch> offset_plate_faces(const ParameterValues& p);
 // The spoon's mid-surface (shape_x(v), arc(u, v) + (0, bend_y(v))) before thickening, and
 // its half thickness thick_y(v) (functions of (u, v) = (x(0), x(1))).
 Fn spoon_mid_surface(const ParameterValues& p);
 Fn spoon_half_thickness(const ParameterValues& p);
-// The key's sides before the warp (the thesis's _sides).
+// The keyboard key's curves (from its parameters): the rounded-square cross section in
+// [-1, 1]^2 (counterclockwise from (1, 0)), the front (yz_left) and back (yz_right) outlines
+// in the yz plane and the side outline in the xz plane (x = half width), curves of v from
+// the bottom (v = 0) to the top (v = 1); the sides before the warp (the thesis's _sides);
+// the caps closing the sides (the model's extra patches): the dished top and the flat bottom.
+Curve key_cross(const ParameterValues& p);
+Curve key_yz_left(const ParameterValues& p);
+Curve key_yz_right(const ParameterValues& p);
+Curve key_xz(const ParameterValues& p);
 Fn key_unwarped(const ParameterValues& p);
+std::vector<ModelPatch> key_caps(const ParameterValues& p);
 // The screwdriver tips' planar cross sections as functions of (u, v) (the model is
 // (section, z(v))), and the Phillips tip's circle radius and wedge-vertex distance D of v.
 Fn screwdriver_regular_section(const ParameterValues& p);

@@ -1,0 +1,22 @@
+// The memory a lattice mesh of a gallery model needs, estimated before anything is allocated,
+// so that `genmod mesh NAME --res N` refuses a request the machine cannot hold instead of
+// ending in std::bad_alloc.
+#pragma once
+
+#include "genmod/models/gallery.hpp"
+
+#include <cstddef>
+
+namespace genmod::app {
+
+// Bytes to mesh `model` at n x n samples per patch (mesh_model's lattice): for each of its
+// patches (a solid's six faces, or the surface and its extra patches) the lattice
+// evaluation tables and result (components x (n + 1)^2 doubles each, the +1 being a periodic
+// axis's seam copy) and the patch's vertices and triangles; plus the concatenated mesh of a
+// many-patch object (vertices and triangles again, with the vectors' growth).
+std::size_t lattice_mesh_bytes(const models::Model& model, std::size_t patches, std::size_t n);
+
+// Half the physical memory (sysconf), the default limit of `genmod mesh --max-memory`.
+std::size_t default_mesh_memory_limit();
+
+}  // namespace genmod::app
