@@ -117,6 +117,9 @@ Fn tennis_racket_wire(const ParameterValues& p);
 Fn briefcase_handle_cross(const ParameterValues& p);
 Fn briefcase_handle_rail1(const ParameterValues& p);
 Fn briefcase_handle_rail2(const ParameterValues& p);
+// The banana's largest |bend| at that thickness: min(pi, L / thickness), L = 2 / (max banscale
+// max |cross_x|) (about 7.4): beyond, its surface intersects itself (banana.cpp says why).
+double banana_max_bend(double thickness);
 // The closed gear curve (teeth, outer_radius, tooth_depth) the gear interpolates from.
 Fn gear_cross(const ParameterValues& p);
 // The App. B.1 fillet as the thesis writes it: a function of (u, v, w) = (x(0), x(1), x(2)),
@@ -181,6 +184,9 @@ Fn screwdriver_phillips_depth(const ParameterValues& p);
 // regions and the result's boundary (curves of x(0); `fillet_radius` present = filleted,
 // `operation` absent = union); the matched inner curve of the cross-section matching model.
 Fn bottle_half_cross(const ParameterValues& p);
+// The bottle's largest tangent_length (exclusive): 3 sqrt 2 min over v of min(q, 1 - q), q
+// the rounding schedule; beyond, its sections intersect themselves (bottle.cpp says why).
+double bottle_max_tangent_length();
 Fn bottle_cross(const ParameterValues& p);
 Fn cpg_circle(const ParameterValues& p);
 Fn cpg_bean(const ParameterValues& p);
