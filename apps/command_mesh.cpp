@@ -85,7 +85,7 @@ int run_mesh(std::span<const std::string> args) {
   if (estimate_mb > limit_mb) {
     char text[256];
     std::snprintf(text, sizeof text, "%s at --res %d needs about %.0f MB (%zu patch%s), above the limit of %.0f MB "
-                  "(--max-memory MB; default half the physical memory)",
+                  "(--max-memory MB; default half the physical memory or of ulimit -v)",
                   model->name.c_str(), res, estimate_mb, model->solid ? std::size_t{6} : patches,
                   (model->solid || patches > 1) ? "es" : "", limit_mb);
     throw UsageError(text);
@@ -100,7 +100,7 @@ int run_mesh(std::span<const std::string> args) {
 }  // namespace
 
 const Command kMeshCommand{
-    "mesh", "NAME [--param NAME=VALUE ...] [--res N] -o FILE | MODEL.vm --min-feature H [options] -o FILE",
+    "mesh", "NAME [--param NAME=VALUE ...] [--res N] [--max-memory MB] -o FILE | MODEL.vm --min-feature H [options] -o FILE",
     "mesh a gallery model (see `genmod list`) or an implicit .vm model to an OBJ/PLY/STL/OFF file",
     "  -p, --param K=V  set a model parameter (once per parameter; defaults from `genmod list`)\n"
     "  --res N          lattice samples per direction, 3..4096 (default 64)\n"

@@ -10,13 +10,15 @@
 namespace genmod::app {
 
 // Bytes to mesh `model` at n x n samples per patch (mesh_model's lattice): for each of its
-// patches (a solid's six faces, or the surface and its extra patches) the lattice
-// evaluation tables and result (components x (n + 1)^2 doubles each, the +1 being a periodic
-// axis's seam copy) and the patch's vertices and triangles; plus the concatenated mesh of a
-// many-patch object (vertices and triangles again, with the vectors' growth).
+// patches (a solid's six faces, or the surface and its extra patches, model_patches) meshed
+// one at a time: the lattice evaluation's full-lattice tables and result (3 x (n + 1)^2
+// doubles each, the +1 being a periodic axis's seam copy) and the patch's vertices and
+// triangles; plus, for more than one patch, the object's mesh holding them all. `patches`
+// is ignored for a solid (six).
 std::size_t lattice_mesh_bytes(const models::Model& model, std::size_t patches, std::size_t n);
 
-// Half the physical memory (sysconf), the default limit of `genmod mesh --max-memory`.
+// Half the physical memory (sysconf), or half the address-space limit (ulimit -v) if that is
+// lower: the default limit of `genmod mesh --max-memory`.
 std::size_t default_mesh_memory_limit();
 
 }  // namespace genmod::app
