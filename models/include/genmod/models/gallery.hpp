@@ -13,7 +13,9 @@
 // A model is either a 3-D surface of (u, v) = (x(0), x(1)) over its domain, or (with
 // `solid`) a generative solid of (u, v, w) = (x(0), x(1), x(2)): a deformed brick, meshed by
 // its six boundary faces. Time-dependent models and families (the fillet's bulge, the wing's
-// time) take the extra coordinate as a model parameter and are surfaces.
+// time) take the extra coordinate as a model parameter and are surfaces. An object made of
+// several surfaces (the plate's walls and faces, the key's sides and caps, the bear's scalp
+// and hairs) has the further ones in Model::extra_patches; model_patches() lists them all.
 //
 //   const Model& m = find_model("doorknob");
 //   Fn s = build_model(m, {{"bulge_radius", 0.9}});   // unspecified parameters keep defaults
