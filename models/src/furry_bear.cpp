@@ -7,8 +7,8 @@
 // combed toward S_v (up the body): it leans from the normal toward S_v by the angle
 // atan(kappa |S_v| / |N|) (N is perpendicular to S_v). The main surface is the scalp; the
 // hair field is furry_bear_hair(p) (for renderers that draw segments or texels), and a grid
-// of hairs sampled from it are the model's extra patches (furry_bear_hairs): thin cones
-// around the hair segments, so a mesher outputs the fur with the scalp. The poles (v = 0, 1)
+// of hairs sampled from it are the model's extra patches (furry_bear_hairs): thin closed
+// tubes around the hair segments, so a mesher outputs the fur with the scalp. The poles (v = 0, 1)
 // have N = 0 (the hair there is along S_v); the grid keeps away from them.
 #include "genmod/models/gallery.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
@@ -57,16 +57,21 @@ V3 unit(const V3& a) {
   return {a[0] / n, a[1] / n, a[2] / n};
 }
 
-// The cone of radius r (1 - s) around the segment root -> tip, (theta, s) = (x(0), x(1)):
-// root + s (tip - root) + r (1 - s) (cos(2 pi theta) e1 + sin(2 pi theta) e2) with e1, e2, d
-// a right-handed frame (d along the hair), so S_theta x S_s points away from the axis.
-Fn hair_cone(const V3& root, const V3& tip, double r) {
-  const V3 d = unit({tip[0] - root[0], tip[1] - root[1], tip[2] - root[2]});
+// One hair as a closed thin tube of (theta, s) = (x(0), x(1)) around the segment from
+// root = S - 2 r d (sunk below the scalp point S, so the tube's closed root end is hidden in
+// the body) to the tip S + hair_length d:
+//   axis(s) + rho(s) (cos(2 pi theta) e1 + sin(2 pi theta) e2),  rho(s) = (27/4) r s (1 - s)^2,
+// rho being 0 at both ends (two poles: the tube is closed), r at s = 1/3 and tapering to the
+// tip. e1, e2, d are a right-handed frame (d along the hair), so S_theta x S_s points away
+// from the axis.
+Fn hair_tube(const V3& scalp_point, const V3& tip, double r) {
+  const V3 d = unit({tip[0] - scalp_point[0], tip[1] - scalp_point[1], tip[2] - scalp_point[2]});
+  const V3 root{scalp_point[0] - 2.0 * r * d[0], scalp_point[1] - 2.0 * r * d[1], scalp_point[2] - 2.0 * r * d[2]};
   // Any axis not close to d gives the frame.
   const V3 helper = std::abs(d[0]) < 0.6 ? V3{1.0, 0.0, 0.0} : V3{0.0, 1.0, 0.0};
   const V3 e1 = unit(cross3(helper, d)), e2 = cross3(d, e1);
   const Fn theta = x(0) * (2.0 * std::numbers::pi), s = x(1);
-  const Fn c = cos(theta), sn = sin(theta), radius = r * (1.0 - s);
+  const Fn c = cos(theta), sn = sin(theta), radius = (6.75 * r) * s * square(1.0 - s);
   std::vector<Fn> xyz;
   for (int k = 0; k < 3; ++k)
     xyz.push_back(root[k] + s * (tip[k] - root[k]) + radius * (e1[k] * c + e2[k] * sn));
@@ -94,7 +99,7 @@ std::vector<ModelPatch> furry_bear_hairs(const ParameterValues& p) {
     for (int i = 0; i < around; ++i) {
       const double u = (i + 0.5) / around, v = (j + 0.5) / rows;
       const auto h = ev.eval(hair, {u, v});
-      ModelPatch patch{hair_cone({h[0], h[1], h[2]}, {h[3], h[4], h[5]}, radius)};
+      ModelPatch patch{hair_tube({h[0], h[1], h[2]}, {h[3], h[4], h[5]}, radius)};
       patch.periodic_u = true;
       hairs.push_back(patch);
     }
@@ -106,12 +111,12 @@ namespace detail {
 Model furry_bear_model() {
   Model m;
   m.name = "furry_bear";
-  m.description = "thesis Fig 3.23: a profile-product scalp carrying a combed hair field (R^2 -> R^6), hairs output as thin cones (extra patches)";
+  m.description = "thesis Fig 3.23: a profile-product scalp carrying a combed hair field (R^2 -> R^6), hairs output as thin tubes (extra patches)";
   m.parameters = {{"size", 1.0, "half the body's height (the body spans z in [-size, size])"},
                   {"hair_length", 0.08, "length of every hair"},
                   {"kappa", 1.5, "combing: the hair leans from the normal N toward S_v by atan(kappa |S_v| / |N|)"},
                   {"hair_rows", 12, "hairs output: hair_rows rows (in v) of 2 hair_rows hairs (in u), a whole number in [1, 14]"},
-                  {"hair_radius", 0.004, "radius of a hair at its root (each hair is a thin cone, a point at the tip)"}};
+                  {"hair_radius", 0.004, "largest radius of a hair (each hair is a thin closed tube, thickest near the scalp, pointed at the tip)"}};
   m.build = [](const ParameterValues& p) {
     require_positive(p, "hair_length");
     require_positive(p, "hair_radius");

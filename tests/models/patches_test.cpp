@@ -1,6 +1,6 @@
 // Multi-patch models (Model::extra_patches, model_patches): the plate's top and bottom faces
 // close its side walls (their edges are the walls' edges, the patches enclose a volume), and
-// the furry bear's hairs are output as thin cones that follow hair_length and kappa.
+// the furry bear's hairs are output as thin closed tubes that follow hair_length and kappa.
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/vector.hpp"
 
@@ -113,9 +113,11 @@ TEST(OffsetPlate, FacesCloseTheWalls) {
   EXPECT_GT(std::abs(walls_only[2] - walls_only[0]), 0.5 * vol[2]);
 }
 
-// The hairs: 2 hair_rows^2 cones, each from a point of the scalp (the root circle has radius
-// hair_radius about it) to the tip of furry_bear_hair, closed at the tip.
-TEST(FurryBear, HairsAreConesAlongTheHairField) {
+// The hairs: 2 hair_rows^2 closed tubes, each around the hair segment of furry_bear_hair
+// (from its scalp point to its tip) extended 2 hair_radius below the scalp: the point at
+// (theta, s) is at distance rho(s) = (27/4) r s (1 - s)^2 from the axis point at s, with
+// poles at the sunk root and at the tip.
+TEST(FurryBear, HairsAreClosedTubesAlongTheHairField) {
   const Model& m = find_model("furry_bear");
   const ParameterValues p = resolve_parameters(m, {{"hair_rows", 5}});
   const std::vector<ModelPatch> hairs = furry_bear_hairs(p);
@@ -129,23 +131,25 @@ TEST(FurryBear, HairsAreConesAlongTheHairField) {
       const ModelPatch& hair = hairs[static_cast<std::size_t>(j * 10 + i)];
       EXPECT_TRUE(hair.periodic_u);
       const auto h = field({(i + 0.5) / 10, (j + 0.5) / 5});
-      Eval cone(hair.surface);
-      for (double a : {0.0, 0.3, 0.71}) {
-        const auto root = cone({a, 0.0}), tip = cone({a, 1.0}), mid = cone({a, 0.5});
-        double d_root = 0.0, d_tip = 0.0, d_mid = 0.0;
-        for (int k = 0; k < 3; ++k) {
-          d_root += (root[k] - h[k]) * (root[k] - h[k]);
-          d_tip += (tip[k] - h[k + 3]) * (tip[k] - h[k + 3]);
-          const double axis = 0.5 * (h[k] + h[k + 3]);
-          d_mid += (mid[k] - axis) * (mid[k] - axis);
+      std::vector<double> d(3);
+      for (int k = 0; k < 3; ++k) d[k] = (h[k + 3] - h[k]) / length;
+      EXPECT_NEAR(norm3(d), 1.0, 1e-12);  // the segment has length hair_length
+      Eval tube(hair.surface), normal(cross(derivative(hair.surface, 0), derivative(hair.surface, 1)));
+      for (double s : {0.0, 0.1, 1.0 / 3.0, 0.6, 1.0})
+        for (double a : {0.0, 0.3, 0.71}) {
+          const auto q = tube({a, s});
+          std::vector<double> off(3);
+          for (int k = 0; k < 3; ++k) off[k] = q[k] - (h[k] - 2 * r * d[k] + s * (length + 2 * r) * d[k]);
+          EXPECT_NEAR(norm3(off), 6.75 * r * s * (1 - s) * (1 - s), 1e-12) << s;
+          EXPECT_NEAR(dot3(off, d), 0.0, 1e-12);  // in the plane across the axis
+          if (s > 0 && s < 1) {
+            EXPECT_GT(dot3(normal({a, s}), off), 0.0);  // facing away from the axis
+          }
         }
-        EXPECT_NEAR(std::sqrt(d_root), r, 1e-12);
-        EXPECT_NEAR(std::sqrt(d_tip), 0.0, 1e-12);
-        EXPECT_NEAR(std::sqrt(d_mid), r / 2, 1e-12);
-      }
-      double len2 = 0.0;
-      for (int k = 0; k < 3; ++k) len2 += (h[k + 3] - h[k]) * (h[k + 3] - h[k]);
-      EXPECT_NEAR(std::sqrt(len2), length, 1e-12);
+      EXPECT_NEAR(norm3(std::vector<double>{tube({0.4, 1.0 / 3.0})[0] - tube({0.9, 1.0 / 3.0})[0],
+                                            tube({0.4, 1.0 / 3.0})[1] - tube({0.9, 1.0 / 3.0})[1],
+                                            tube({0.4, 1.0 / 3.0})[2] - tube({0.9, 1.0 / 3.0})[2]}),
+                  2 * r, 1e-12);  // opposite points at the thickest place: the diameter
     }
 }
 

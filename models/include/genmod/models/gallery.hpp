@@ -142,9 +142,10 @@ Fn wing_cross(const ParameterValues& p);
 Fn furry_bear_hair(const ParameterValues& p);
 // The bear's hairs as surfaces (the model's extra patches): hair_rows rows of 2 hair_rows
 // hairs each, rooted at u = (i + 1/2) / (2 hair_rows), v = (j + 1/2) / hair_rows; each a thin
-// cone of x(0) (around, periodic) and x(1) (root to tip) about the segment of
-// furry_bear_hair, radius hair_radius (1 - x(1)) (open at the root on the scalp, a point at
-// the tip).
+// closed tube of x(0) (around, periodic) and x(1) (root to tip) about the hair segment S ->
+// tip of furry_bear_hair, extended 2 hair_radius below the scalp: the axis from
+// S - 2 hair_radius d to the tip (d the hair's direction), radius
+// (27/4) hair_radius x(1) (1 - x(1))^2 (poles at both ends, hair_radius at x(1) = 1/3).
 std::vector<ModelPatch> furry_bear_hairs(const ParameterValues& p);
 
 // Offset models of thesis 7.13-7.18 (offsets, offset_plate, spoon, key, screwdriver tips).
