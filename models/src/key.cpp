@@ -20,11 +20,10 @@
 // z += warp_scale x^2 + warp_offset (a cylindrical dish), both Coons patches on the sides'
 // edges (coons_face.hpp).
 #include "genmod/models/gallery.hpp"
-#include "genmod/operators/higher_order.hpp"
-#include "genmod/operators/warp.hpp"
-
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
+#include "genmod/operators/higher_order.hpp"
+#include "genmod/operators/warp.hpp"
 
 #include "coons_face.hpp"
 
