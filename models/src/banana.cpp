@@ -18,7 +18,8 @@
 // the two tips, at (0, 0, -1) and R(-bend) (0, 0, 1), meet at |bend| = pi and the banana
 // passes through itself beyond, so |bend| < pi. Sampling agrees: lattice meshes (v in
 // [0.001, 0.999], 256^2) have no self-intersecting triangles up to bend 3.145 at thickness 1
-// (tips cut), and fold from bend thickness = 7.4 on (banana_test / gallery tests).
+// (tips cut), none at bend thickness 6.5 and many from 6.9 on, the limit being 6.70
+// (self_intersection_limits_test.cpp checks just inside the limits).
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/higher_order.hpp"
 #include "genmod/operators/transform.hpp"
@@ -46,7 +47,7 @@ double curve_max(const Curve& c, std::size_t k, double sign) {
   return best;
 }
 
-// 2 / (max(banscale) max(-+cx)): the largest |bend| thickness before the fold (about 7.4).
+// 2 / (max(banscale) max(-+cx)): the largest |bend| thickness before the fold (about 6.70).
 double fold_limit() {
   static const double limit = [] {
     const Curve cross = gallery_curve("banana_cross");
@@ -67,7 +68,7 @@ Model banana_model() {
   m.name = "banana";
   m.description = "thesis Fig 3.6: quasi-linear sweep of a rounded pentagon: scaled by a bump schedule, lifted and bent about y";
   m.parameters = {{"bend", 0.4 * std::numbers::pi,
-                   "bend angle in radians: the section at v is rotated by -bend v about y; |bend| < min(pi, 7.4 / thickness) "
+                   "bend angle in radians: the section at v is rotated by -bend v about y; |bend| < min(pi, 6.70 / thickness) "
                    "(beyond, the surface intersects itself)"},
                   {"thickness", 1.0, "multiplier of the banscale schedule (the largest section radius is about 0.3 thickness)"}};
   m.build = [](const ParameterValues& p) {

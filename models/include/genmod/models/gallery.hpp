@@ -120,7 +120,7 @@ Fn briefcase_handle_cross(const ParameterValues& p);
 Fn briefcase_handle_rail1(const ParameterValues& p);
 Fn briefcase_handle_rail2(const ParameterValues& p);
 // The banana's largest |bend| at that thickness: min(pi, L / thickness), L = 2 / (max banscale
-// max |cross_x|) (about 7.4): beyond, its surface intersects itself (banana.cpp says why).
+// max |cross_x|) (about 6.70): beyond, its surface intersects itself (banana.cpp says why).
 double banana_max_bend(double thickness);
 // The closed gear curve (teeth, outer_radius, tooth_depth) the gear interpolates from.
 Fn gear_cross(const ParameterValues& p);
