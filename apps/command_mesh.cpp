@@ -1,6 +1,7 @@
 // genmod mesh NAME [--param k=v ...] [--res N] -o FILE: a gallery model as a triangle mesh.
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "mesh_memory.hpp"
 #include "option_values.hpp"
 
 #include "genmod/models/gallery.hpp"
@@ -41,21 +42,23 @@ int run_mesh(std::span<const std::string> args) {
   for (const std::string& arg : args)
     if ((arg.size() > 3 && arg.compare(arg.size() - 3, 3, ".vm") == 0) || models::find_implicit_model(arg))
       return run_mesh_implicit(args);
-  // --param may repeat: take every occurrence out before the generic scanner sees the rest.
+  // --param repeats for different parameters: take every occurrence out before the generic
+  // scanner sees the rest. The same parameter twice is a mistake, not "last one wins".
   models::ParameterValues overrides;
   std::vector<std::string> rest;
   for (std::size_t i = 0; i < args.size(); ++i) {
     if (args[i] == "--param" || args[i] == "-p") {
       if (i + 1 >= args.size()) throw UsageError("option " + args[i] + " needs a value");
       const auto [name, value] = parse_param(args[++i]);
-      overrides[name] = value;
+      if (!overrides.emplace(name, value).second)
+        throw UsageError("--param " + name + " is given more than once (set each parameter once)");
     } else {
       rest.push_back(args[i]);
     }
   }
   static constexpr std::array<const char*, 1> kFlags{"--no-check"};
-  static constexpr std::array<const char*, 6> kValued{"--res", "-o", "--output", "--tolerance", "--max-leaves",
-                                                      "--threads"};
+  static constexpr std::array<const char*, 7> kValued{"--res", "-o", "--output", "--tolerance", "--max-leaves",
+                                                      "--threads", "--max-memory"};
   const Arguments a(rest, kFlags, kValued);
   if (a.positional().size() != 1)
     throw UsageError(a.positional().empty() ? "missing model name" : "expected one model name, got " +
@@ -66,31 +69,49 @@ int run_mesh(std::span<const std::string> args) {
     throw UsageError("--res (uniform lattice) and --tolerance (adaptive) exclude each other");
   if (!mesh_format(*output))
     throw UsageError("output '" + *output + "': unknown mesh extension (use .obj, .ply, .stl or .off)");
+  const double limit_mb = positive_option(a, {"--max-memory"}, static_cast<double>(default_mesh_memory_limit() >> 20), false);
   check_writable(*output);
 
   const models::Model* model = nullptr;
   Fn surface;
+  std::size_t patches = 1;
+  models::ParameterValues params;
   try {
     model = &models::find_model(a.positional()[0]);
-    surface = models::build_model(*model, overrides);
+    params = models::resolve_parameters(*model, overrides);
+    surface = model->build(params);
+    if (!model->solid) patches = models::model_patches(*model, surface, params).size();
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());  // unknown model, unknown or out-of-range parameter
   }
   if (a.has("--res")) {
     const int res = a.int_value({"--res"}, 64, 3, 4096);
-    const Mesh mesh = models::mesh_model(*model, surface, static_cast<std::size_t>(res));
-    write_mesh(mesh, *output);
-    std::printf("%s: %zu vertices, %zu triangles (uniform %d x %d lattice) -> %s\n", model->name.c_str(),
-                mesh.vertices.size(), mesh.triangles.size(), res, res, output->c_str());
-    return 0;
+    // Refuse before allocating: the estimate against the limit, both printed.
+  const double estimate_mb =
+      static_cast<double>(lattice_mesh_bytes(*model, patches, static_cast<std::size_t>(res))) / (1 << 20);
+  if (estimate_mb > limit_mb) {
+    char text[256];
+    std::snprintf(text, sizeof text, "%s at --res %d needs about %.0f MB (%zu patch%s), above the limit of %.0f MB "
+                  "(--max-memory MB; default half the physical memory or of ulimit -v)",
+                  model->name.c_str(), res, estimate_mb, model->solid ? std::size_t{6} : patches,
+                  (model->solid || patches > 1) ? "es" : "", limit_mb);
+    throw UsageError(text);
+  }
+  const Mesh mesh = models::mesh_model(*model, surface, static_cast<std::size_t>(res));
+  write_mesh(mesh, *output);
+  std::printf("%s: %zu vertices, %zu triangles (uniform %d x %d lattice) -> %s\n", model->name.c_str(),
+              mesh.vertices.size(), mesh.triangles.size(), res, res, output->c_str());
+  return 0;
   }
   AdaptiveMeshOptions options;
   options.tolerance = positive_option(a, {"--tolerance"}, 0.0, true);
-  if (options.tolerance == 0.0) options.tolerance = 1e-3 * models::model_extent(*model, surface);
+  if (options.tolerance == 0.0) options.tolerance = 1e-3 * models::model_extent(*model, surface, params);
   options.max_leaves = static_cast<std::size_t>(a.int_value({"--max-leaves"}, 4'000'000, 1, 1'000'000'000));
+  // The memory limit as a leaf limit (about kAdaptiveBytesPerLeaf per leaf, measured).
+  options.max_leaves = std::min(options.max_leaves, static_cast<std::size_t>(limit_mb * (1 << 20) / kAdaptiveBytesPerLeaf));
   options.threads = a.int_value({"--threads"}, 0, 0, 1024);
   const auto start = std::chrono::steady_clock::now();
-  const AdaptiveMesh m = models::mesh_model_adaptive(*model, surface, options);
+  const AdaptiveMesh m = models::mesh_model_adaptive(*model, surface, params, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_mesh(m.mesh, *output);
   std::printf("%s: %zu vertices, %zu triangles from %zu leaves in %.3f s -> %s\n", model->name.c_str(),
@@ -110,13 +131,15 @@ int run_mesh(std::span<const std::string> args) {
 }  // namespace
 
 const Command kMeshCommand{
-    "mesh", "NAME [--param NAME=VALUE ...] [--tolerance E | --res N] -o FILE | MODEL.vm --min-feature H [options] -o FILE",
+    "mesh", "NAME [--param NAME=VALUE ...] [--tolerance E | --res N] [--max-memory MB] -o FILE | MODEL.vm --min-feature H [options] -o FILE",
     "mesh a gallery model (see `genmod list`) or an implicit .vm model to an OBJ/PLY/STL/OFF file",
-    "  -p, --param K=V  set a model parameter (repeatable; defaults from `genmod list`)\n"
+    "  -p, --param K=V  set a model parameter (once per parameter; defaults from `genmod list`)\n"
     "  --tolerance E    largest distance between mesh and surface (adaptive kd-tree mesher, the default;\n"
     "                 default 0.001 of the model's size); the certified bound is printed\n"
     "  --max-leaves N   kd-tree leaf limit (default 4000000; reported when reached)\n"
     "  --res N          a uniform N x N lattice instead, 3..4096 (faces not welded)\n"
+    "  --max-memory MB  refuse a lattice whose estimated memory is above MB, or stop refining the adaptive\n"
+    "                 mesh there (default half the physical memory)\n"
     "  -o, --output     mesh file to write; the format follows the extension (.obj .ply .stl .off)\n"
     "implicit models (MODEL.vm or an implicit gallery name; the mesh bounds the solid f < 0 in the box):\n"
     "  --box x0,y0,z0,x1,y1,z1  region to mesh (default: the model's box, or -1,-1,-1,1,1,1)\n"

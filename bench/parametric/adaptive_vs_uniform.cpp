@@ -56,9 +56,10 @@ int main(int argc, char** argv) {
   double log_ratio_sum = 0.0, ratio_sum = 0.0;
   int count = 0;
   for (const models::Model& model : models::gallery()) {
-    const Fn surface = models::build_model(model);
-    const std::vector<SurfacePatch> patches = models::surface_patches(model, surface);
-    const double tol = rel * models::model_extent(model, surface);
+    const models::ParameterValues params = models::resolve_parameters(model);
+    const Fn surface = model.build(params);
+    const std::vector<SurfacePatch> patches = models::model_patches(model, surface, params);
+    const double tol = rel * models::model_extent(model, surface, params);
     AdaptiveMeshOptions adaptive_options{.tolerance = tol, .max_leaves = 2'000'000, .threads = 1};
     const Run adaptive = timed(patches, adaptive_options, 3);
     // Uniform: split every leaf until it is 2^-k of the domain on both axes.

@@ -1,74 +1,24 @@
-// Gallery models meshed by the adaptive parametric mesher: the surface patches of a model
-// (a solid's boundary faces), handed to mesh_adaptive, which glues their shared edges.
+// Gallery models meshed by the adaptive parametric mesher: the model's extent (the scale of
+// the default tolerance) and its patches handed to mesh_adaptive, which glues shared edges.
 #include "genmod/models/gallery.hpp"
 
 #include "genmod/kernel/point_evaluator.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <stdexcept>
 
 namespace genmod::models {
 
 namespace {
-
 constexpr int kUv[2] = {0, 1};
-
-// Face k = end of the solid S(u, v, w): coordinate k fixed at that end, the other two
-// (ascending) renamed to x(0), x(1).
-SurfacePatch solid_face(const Fn& solid, const Interval domain[3], int k, int end) {
-  const int a = k == 0 ? 1 : 0, b = k == 2 ? 1 : 2;
-  const Fn fixed = compose(solid, k, Fn(end == 0 ? domain[k].lo() : domain[k].hi()));
-  const int from[2] = {a, b};
-  return {compose_all(fixed, from, cat({x(0), x(1)})), domain[a], domain[b]};
-}
-
-// True when two faces are the same surface at sampled points (a solid swept all the way
-// around, whose first and last faces meet inside it).
-bool same_face(const SurfacePatch& f, const SurfacePatch& g) {
-  const Tape tf(f.surface, kUv), tg(g.surface, kUv);
-  PointEvaluator ev;
-  double extent = 0.0;
-  std::array<double, 3> first{};
-  constexpr int n = 7;
-  std::vector<std::array<double, 3>> a, b;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const double u = f.u.lo() + (f.u.hi() - f.u.lo()) * i / (n - 1), v = f.v.lo() + (f.v.hi() - f.v.lo()) * j / (n - 1);
-      const auto p = ev.eval(tf, {u, v});
-      a.push_back({p[0], p[1], p[2]});
-      const auto q = ev.eval(tg, {u, v});
-      b.push_back({q[0], q[1], q[2]});
-      if (i == 0 && j == 0) first = a.back();
-      extent = std::max(extent, std::hypot(p[0] - first[0], p[1] - first[1], p[2] - first[2]));
-    }
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (!(std::hypot(a[i][0] - b[i][0], a[i][1] - b[i][1], a[i][2] - b[i][2]) <= 1e-9 * extent)) return false;
-  return true;
-}
-
 }  // namespace
 
-std::vector<SurfacePatch> surface_patches(const Model& model, const Fn& surface) {
-  if (!model.solid) return {SurfacePatch{surface, model.u, model.v, model.periodic_u, model.periodic_v}};
-  if (surface.dim() != 3) throw std::invalid_argument("solid model '" + model.name + "' must have 3 outputs");
-  const Interval domain[3] = {model.u, model.v, model.w};
-  std::vector<SurfacePatch> faces;
-  for (int k = 0; k < 3; ++k) {
-    SurfacePatch lo = solid_face(surface, domain, k, 0), hi = solid_face(surface, domain, k, 1);
-    if (same_face(lo, hi)) continue;  // closed up: the two faces are inside the solid
-    faces.push_back(std::move(lo));
-    faces.push_back(std::move(hi));
-  }
-  return faces;
-}
-
-double model_extent(const Model& model, const Fn& surface) {
+double model_extent(const Model& model, const Fn& surface, const ParameterValues& params) {
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
   PointEvaluator ev;
   constexpr int n = 17;
-  for (const SurfacePatch& p : surface_patches(model, surface)) {
+  for (const SurfacePatch& p : model_patches(model, surface, params)) {
     const Tape t(p.surface, kUv);
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) {
@@ -84,8 +34,9 @@ double model_extent(const Model& model, const Fn& surface) {
   return d;
 }
 
-AdaptiveMesh mesh_model_adaptive(const Model& model, const Fn& surface, const AdaptiveMeshOptions& options) {
-  return mesh_adaptive(surface_patches(model, surface), options);
+AdaptiveMesh mesh_model_adaptive(const Model& model, const Fn& surface, const ParameterValues& p,
+                                 const AdaptiveMeshOptions& options) {
+  return mesh_adaptive(model_patches(model, surface, p), options);
 }
 
 }  // namespace genmod::models

@@ -62,11 +62,12 @@ BatchMesh mesh_gallery_job(const Model& model, const Fn& surface, const JobDescr
   if (job.res && job.tolerance)
     throw std::invalid_argument("genmod: res= (uniform lattice) and tolerance= (adaptive) exclude each other");
   if (job.res) return {mesh_model(model, surface, static_cast<std::size_t>(*job.res)), std::nullopt, {}, {}};
+  const ParameterValues params = resolve_parameters(model, job.parameters);
   // As `genmod mesh`: adaptive, by default within 0.001 of the model's size.
   AdaptiveMeshOptions options;
-  options.tolerance = job.tolerance.value_or(0.0) > 0.0 ? *job.tolerance : 1e-3 * model_extent(model, surface);
+  options.tolerance = job.tolerance.value_or(0.0) > 0.0 ? *job.tolerance : 1e-3 * model_extent(model, surface, params);
   options.max_seconds = job.max_seconds.value_or(0.0);
-  AdaptiveMesh m = mesh_model_adaptive(model, surface, options);
+  AdaptiveMesh m = mesh_model_adaptive(model, surface, params, options);
   BatchMesh out{std::move(m.mesh), m.distance_bound, std::move(m.limits_hit), {}};
   if (!m.closed()) out.note = std::to_string(m.boundary_edges) + " boundary edges (open surface)";
   return out;

@@ -95,6 +95,24 @@ elseif(CASE STREQUAL "usage_errors")
   expect_error(ARGS mesh torus NEEDLES "-o")
   expect_error(ARGS list extra NEEDLES "extra")
   expect_error(ARGS frobnicate NEEDLES "frobnicate")
+elseif(CASE STREQUAL "mesh_param_and_memory_limits")
+  # A parameter given twice is a usage error naming it (not "the last one wins"), with either
+  # spelling of the option; different parameters still combine.
+  expect_error(ARGS mesh torus --param minor_radius=0.2 --param minor_radius=0.3 -o ${WORK}/t.obj
+               NEEDLES "minor_radius" "more than once")
+  expect_error(ARGS mesh torus -p major_radius=2 --param major_radius=2 -o ${WORK}/t.obj
+               NEEDLES "major_radius" "more than once")
+  expect_ok(mesh torus --param minor_radius=0.2 --param major_radius=2 --res 6 -o ${WORK}/t.obj)
+  # A lattice mesh above --max-memory is refused before anything is allocated, with the
+  # estimate and the limit; below it the mesh is written.
+  expect_error(ARGS mesh circular_beam --res 4096 --max-memory 1000 -o ${WORK}/beam.obj
+               NEEDLES "circular_beam" "--res 4096" "MB" "1000 MB" "--max-memory")
+  if(EXISTS ${WORK}/beam.obj)
+    message(FATAL_ERROR "a refused mesh wrote its file")
+  endif()
+  expect_error(ARGS mesh torus --res 2000 --max-memory 10 -o ${WORK}/t.obj NEEDLES "10 MB" "torus")
+  expect_error(ARGS mesh torus --max-memory 0 -o ${WORK}/t.obj NEEDLES "--max-memory")
+  expect_ok(mesh torus --res 100 --max-memory 10 -o ${WORK}/t.obj)
 elseif(CASE STREQUAL "render_and_info")
   expect_ok(info ${DATA}/quarter.vm)
   if(NOT out MATCHES "clauses")

@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <initializer_list>
 #include <limits>
 #include <span>
@@ -100,6 +101,62 @@ inline double distance(const std::vector<P2>& line, P2 q) {
     best = std::min(best, std::hypot(q[0] - a[0] - t * dx, q[1] - a[1] - t * dy));
   }
   return best;
+}
+
+// A curve in space: its point at t in [0, 1].
+using SpaceCurve = std::function<std::vector<double>(double)>;
+
+// Distance from q to the curve c: the nearest of `samples` + 1 samples, then a golden-section
+// search for the minimum of |c(t) - q| around it (accurate to rounding on smooth curves).
+inline double distance_to_curve(const SpaceCurve& c, const std::vector<double>& q, int samples = 2048) {
+  auto dist = [&](double t) {
+    const auto p = c(std::clamp(t, 0.0, 1.0));
+    double d2 = 0.0;
+    for (std::size_t k = 0; k < q.size(); ++k) d2 += (p[k] - q[k]) * (p[k] - q[k]);
+    return std::sqrt(d2);
+  };
+  int best = 0;
+  double best_d = dist(0.0);
+  for (int i = 1; i <= samples; ++i)
+    if (const double d = dist(static_cast<double>(i) / samples); d < best_d) best_d = d, best = i;
+  double a = static_cast<double>(best - 1) / samples, b = static_cast<double>(best + 1) / samples;
+  const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+  for (int it = 0; it < 80; ++it) {
+    const double c1 = b - g * (b - a), c2 = a + g * (b - a);
+    if (dist(c1) < dist(c2)) b = c2;
+    else a = c1;
+  }
+  return std::min(best_d, dist(0.5 * (a + b)));
+}
+
+// The four edges of the patch f over [0, 1]^2 (u = 0, u = 1, v = 0, v = 1) as curves; `f`
+// must outlive them.
+inline std::vector<SpaceCurve> patch_edges(Eval& f) {
+  return {[&f](double t) { return f({0.0, t}); }, [&f](double t) { return f({1.0, t}); },
+          [&f](double t) { return f({t, 0.0}); }, [&f](double t) { return f({t, 1.0}); }};
+}
+
+// The divergence theorem's three volumes of a surface made of patches (u, v) -> S over
+// [u0, u1] x [v0, v1]: V_k = sum of the integrals of S_k (S_u x S_v)_k du dv (k = x, y, z),
+// by the midpoint rule on n x n cells. For a closed surface oriented outward the three are
+// equal (the enclosed volume); a missing face makes them differ.
+struct PatchDomain {
+  Fn surface;
+  double u0 = 0.0, u1 = 1.0, v0 = 0.0, v1 = 1.0;
+};
+inline std::array<double, 3> flux_volumes(const std::vector<PatchDomain>& patches, int n) {
+  std::array<double, 3> vol{0.0, 0.0, 0.0};
+  for (const PatchDomain& p : patches) {
+    Eval s(p.surface), nrm(cross(derivative(p.surface, 0), derivative(p.surface, 1)));
+    const double du = (p.u1 - p.u0) / n, dv = (p.v1 - p.v0) / n;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double u = p.u0 + (i + 0.5) * du, v = p.v0 + (j + 0.5) * dv;
+        const auto q = s({u, v}), m = nrm({u, v});
+        for (int k = 0; k < 3; ++k) vol[static_cast<std::size_t>(k)] += q[k] * m[k] * du * dv;
+      }
+  }
+  return vol;
 }
 
 }  // namespace genmod::models::testing

@@ -13,7 +13,9 @@
 // A model is either a 3-D surface of (u, v) = (x(0), x(1)) over its domain, or (with
 // `solid`) a generative solid of (u, v, w) = (x(0), x(1), x(2)): a deformed brick, meshed by
 // its six boundary faces. Time-dependent models and families (the fillet's bulge, the wing's
-// time) take the extra coordinate as a model parameter and are surfaces.
+// time) take the extra coordinate as a model parameter and are surfaces. An object made of
+// several surfaces (the plate's walls and faces, the key's sides and caps, the bear's scalp
+// and hairs) has the further ones in Model::extra_patches; model_patches() lists them all.
 //
 //   const Model& m = find_model("doorknob");
 //   Fn s = build_model(m, {{"bulge_radius", 0.9}});   // unspecified parameters keep defaults
@@ -43,6 +45,10 @@ struct ModelParameter {
 
 using ParameterValues = std::map<std::string, double>;
 
+// One parametric surface of (u, v) = (x(0), x(1)) over u x v; a periodic axis closes the
+// surface across its ends (the adaptive mesher's patch type, parametric_mesher.hpp).
+using ModelPatch = SurfacePatch;
+
 struct Model {
   std::string name, description;
   std::vector<ModelParameter> parameters;
@@ -58,6 +64,11 @@ struct Model {
   // Open by nature (a sheet, a fillet piece, a tube without caps): its mesh has a boundary.
   // Every other model's adaptive mesh is closed.
   bool open = false;
+  // Further surfaces of the same object (an empty function or an empty list: none), from the
+  // same complete parameter map: the plate's top and bottom faces, the bear's hairs. Where
+  // the object is closed, each edge of a patch coincides geometrically with an edge of the
+  // main surface or of another patch (a mesher glues them). Throws like `build`.
+  std::function<std::vector<ModelPatch>(const ParameterValues&)> extra_patches;
 };
 
 // All models, in a fixed order.
@@ -74,21 +85,25 @@ ParameterValues resolve_parameters(const std::string& model_name, const std::vec
                                    const ParameterValues& overrides);
 // model.build(resolve_parameters(model, overrides)).
 Fn build_model(const Model& model, const ParameterValues& overrides = {});
+// Every surface of the object, for meshers: the main surface (`surface`, built from `p` by
+// model.build, with the model's domain and periodic flags) first, then model.extra_patches(p);
+// for a solid, its six boundary faces (each a function of x(0), x(1); a pair of opposite
+// faces that coincide, as in a solid swept all the way around, is left out).
+// `p` is a complete parameter map (resolve_parameters).
+std::vector<ModelPatch> model_patches(const Model& model, const Fn& surface, const ParameterValues& p);
+
 // The surface meshed with mesh_parametric on an n x n lattice over the model's domain, with
 // the model's periodic axes closed (n >= 3). A solid is meshed as its six boundary faces
 // (u, v or w at either end of its domain), each an n x n lattice patch, oriented outward
 // where the solid's Jacobian determinant is positive; the patches are not welded.
 Mesh mesh_model(const Model& model, const Fn& surface, std::size_t n);
-// The surface patches of a model for mesh_adaptive: the surface over its domain with its
-// periodic axes, or a solid's six boundary faces (each a function of x(0), x(1); a pair of
-// opposite faces that coincide, as in a solid swept all the way around, is left out).
-std::vector<SurfacePatch> surface_patches(const Model& model, const Fn& surface);
-// The model meshed adaptively (parametric_mesher.hpp): closed models give closed, outward
-// meshes within options.tolerance of the surface.
-// The diagonal of the bounding box of the model's surface at 17 x 17 samples per patch (the
-// scale of the default tolerance).
-double model_extent(const Model& model, const Fn& surface);
-AdaptiveMesh mesh_model_adaptive(const Model& model, const Fn& surface, const AdaptiveMeshOptions& options);
+// The diagonal of the bounding box of the model's patches at 17 x 17 samples each (the scale
+// of the default tolerance).
+double model_extent(const Model& model, const Fn& surface, const ParameterValues& p);
+// The model's patches meshed adaptively (parametric_mesher.hpp): closed models give closed,
+// outward meshes within options.tolerance of the surface.
+AdaptiveMesh mesh_model_adaptive(const Model& model, const Fn& surface, const ParameterValues& p,
+                                 const AdaptiveMeshOptions& options);
 
 // The curve files of models/curves (compiled into the library): the curve in
 // models/curves/<name>.crv, parsed (CurveFileError naming the file and line), or
@@ -113,6 +128,9 @@ Fn tennis_racket_wire(const ParameterValues& p);
 Fn briefcase_handle_cross(const ParameterValues& p);
 Fn briefcase_handle_rail1(const ParameterValues& p);
 Fn briefcase_handle_rail2(const ParameterValues& p);
+// The banana's largest |bend| at that thickness: min(pi, L / thickness), L = 2 / (max banscale
+// max |cross_x|) (about 6.70): beyond, its surface intersects itself (banana.cpp says why).
+double banana_max_bend(double thickness);
 // The closed gear curve (teeth, outer_radius, tooth_depth) the gear interpolates from.
 Fn gear_cross(const ParameterValues& p);
 // The App. B.1 fillet as the thesis writes it: a function of (u, v, w) = (x(0), x(1), x(2)),
@@ -131,6 +149,13 @@ Fn wing_cross(const ParameterValues& p);
 // The furry bear's hair field V(u, v) = (S, S + hair_length normalize(N + kappa S_v)) in R^6,
 // S the scalp (the model surface), N = S_u x S_v.
 Fn furry_bear_hair(const ParameterValues& p);
+// The bear's hairs as surfaces (the model's extra patches): hair_rows rows of 2 hair_rows
+// hairs each, rooted at u = (i + 1/2) / (2 hair_rows), v = (j + 1/2) / hair_rows; each a thin
+// closed tube of x(0) (around, periodic) and x(1) (root to tip) about the hair segment S ->
+// tip of furry_bear_hair, extended 2 hair_radius below the scalp: the axis from
+// S - 2 hair_radius d to the tip (d the hair's direction), radius
+// (27/4) hair_radius x(1) (1 - x(1))^2 (poles at both ends, hair_radius at x(1) = 1/3).
+std::vector<ModelPatch> furry_bear_hairs(const ParameterValues& p);
 
 // Offset models of thesis 7.13-7.18 (offsets, offset_plate, spoon, key, screwdriver tips).
 // The offsets surface of any closed planar curve of x(0): (offset_curve(c, r)(u), r) with
@@ -141,12 +166,24 @@ Curve offsets_curve(const ParameterValues& p);
 // The plate's closed cross section and its (inward offset d1, height d2) edge profile.
 Curve offset_plate_cross(const ParameterValues& p);
 Curve offset_plate_profile(const ParameterValues& p);
+// The plate's top (z = thickness / 2, normal +z) and bottom (normal -z) faces: Coons patches
+// bounded by the sides' top and bottom edges (the model's extra patches).
+std::vector<ModelPatch> offset_plate_faces(const ParameterValues& p);
 // The spoon's mid-surface (shape_x(v), arc(u, v) + (0, bend_y(v))) before thickening, and
 // its half thickness thick_y(v) (functions of (u, v) = (x(0), x(1))).
 Fn spoon_mid_surface(const ParameterValues& p);
 Fn spoon_half_thickness(const ParameterValues& p);
-// The key's sides before the warp (the thesis's _sides).
+// The keyboard key's curves (from its parameters): the rounded-square cross section in
+// [-1, 1]^2 (counterclockwise from (1, 0)), the front (yz_left) and back (yz_right) outlines
+// in the yz plane and the side outline in the xz plane (x = half width), curves of v from
+// the bottom (v = 0) to the top (v = 1); the sides before the warp (the thesis's _sides);
+// the caps closing the sides (the model's extra patches): the dished top and the flat bottom.
+Curve key_cross(const ParameterValues& p);
+Curve key_yz_left(const ParameterValues& p);
+Curve key_yz_right(const ParameterValues& p);
+Curve key_xz(const ParameterValues& p);
 Fn key_unwarped(const ParameterValues& p);
+std::vector<ModelPatch> key_caps(const ParameterValues& p);
 // The screwdriver tips' planar cross sections as functions of (u, v) (the model is
 // (section, z(v))), and the Phillips tip's circle radius and wedge-vertex distance D of v.
 Fn screwdriver_regular_section(const ParameterValues& p);
@@ -159,6 +196,9 @@ Fn screwdriver_phillips_depth(const ParameterValues& p);
 // regions and the result's boundary (curves of x(0); `fillet_radius` present = filleted,
 // `operation` absent = union); the matched inner curve of the cross-section matching model.
 Fn bottle_half_cross(const ParameterValues& p);
+// The bottle's largest tangent_length (exclusive): 3 sqrt 2 min over v of min(q, 1 - q), q
+// the rounding schedule; beyond, its sections intersect themselves (bottle.cpp says why).
+double bottle_max_tangent_length();
 Fn bottle_cross(const ParameterValues& p);
 Fn cpg_circle(const ParameterValues& p);
 Fn cpg_bean(const ParameterValues& p);

@@ -1,0 +1,193 @@
+// Multi-patch models (Model::extra_patches, model_patches): the plate's top and bottom faces
+// close its side walls (their edges are the walls' edges, the patches enclose a volume), and
+// the furry bear's hairs are output as thin closed tubes that follow hair_length and kappa.
+#include "genmod/models/gallery.hpp"
+#include "genmod/operators/vector.hpp"
+
+#include "models/model_testing.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace genmod::models {
+namespace {
+
+using namespace testing;  // the shared helpers of models/model_testing.hpp
+
+// model_patches: the main surface first, with the model's domain and periodic flags, then
+// the extra patches; a model without extra patches has one.
+TEST(ModelPatches, MainSurfaceFirstThenTheExtraPatches) {
+  const Model& plate = find_model("offset_plate");
+  const ParameterValues p = resolve_parameters(plate);
+  const Fn sides = plate.build(p);
+  const std::vector<ModelPatch> patches = model_patches(plate, sides, p);
+  ASSERT_EQ(patches.size(), 3u);
+  EXPECT_EQ(patches[0].surface.node(0), sides.node(0));
+  EXPECT_TRUE(patches[0].periodic_u);
+  EXPECT_FALSE(patches[0].periodic_v);
+  const Model& torus = find_model("torus");
+  const ParameterValues q = resolve_parameters(torus);
+  const std::vector<ModelPatch> one = model_patches(torus, torus.build(q), q);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].periodic_u, torus.periodic_u);
+  EXPECT_EQ(one[0].periodic_v, torus.periodic_v);
+  EXPECT_EQ(one[0].u.hi(), torus.u.hi());
+  const Model& beam = find_model("circular_beam");
+  const ParameterValues b = resolve_parameters(beam);
+  EXPECT_EQ(model_patches(beam, beam.build(b), b).size(), 6u);  // a solid: its six faces
+}
+
+// The top face is the plane z = thickness / 2 facing up, the bottom z = -thickness / 2 facing
+// down, both inside the walls' edge curve (no fold out of it).
+TEST(OffsetPlate, FacesArePlanarInsideTheEdgeAndFaceOutward) {
+  const Model& m = find_model("offset_plate");
+  for (const ParameterValues& overrides : {ParameterValues{}, ParameterValues{{"thickness", 0.5}, {"edge_radius", 0.09}}}) {
+    const ParameterValues p = resolve_parameters(m, overrides);
+    const double t = p.at("thickness") / 2;
+    const std::vector<ModelPatch> faces = offset_plate_faces(p);
+    ASSERT_EQ(faces.size(), 2u);
+    Eval sides(m.build(p));
+    for (int f = 0; f < 2; ++f) {
+      const double z = f == 0 ? t : -t, up = f == 0 ? 1.0 : -1.0;
+      const Fn face = faces[static_cast<std::size_t>(f)].surface;
+      Eval s(face), normal(cross(derivative(face, 0), derivative(face, 1)));
+      // The edge as a polygon for the winding number.
+      std::vector<P2> edge;
+      for (int i = 0; i <= 2000; ++i) {
+        const auto q = sides({i / 2000.0, f == 0 ? 1.0 : 0.0});
+        edge.push_back({q[0], q[1]});
+      }
+      for (int i = 0; i <= 30; ++i)
+        for (int j = 0; j <= 30; ++j) {
+          const auto q = s({i / 30.0, j / 30.0});
+          EXPECT_NEAR(q[2], z, 1e-14);
+          if (i == 0 || i == 30 || j == 0 || j == 30) continue;
+          EXPECT_GT(up * normal({i / 30.0, j / 30.0})[2], 0.0) << f << ": " << i << ", " << j;
+          double winding = 0.0;
+          for (std::size_t k = 0; k + 1 < edge.size(); ++k)
+            winding += std::atan2((edge[k][0] - q[0]) * (edge[k + 1][1] - q[1]) - (edge[k][1] - q[1]) * (edge[k + 1][0] - q[0]),
+                                  (edge[k][0] - q[0]) * (edge[k + 1][0] - q[0]) + (edge[k][1] - q[1]) * (edge[k + 1][1] - q[1]));
+          EXPECT_NEAR(winding, 2 * std::numbers::pi, 1e-6) << f << ": " << i << ", " << j;
+        }
+    }
+  }
+}
+
+// Sample points on each face's four edges are on the walls' edge (within 1e-9) and every
+// sample of the walls' edge is on a face edge: the edges coincide, so a mesher can close the
+// plate; the three patches enclose the plate's volume (x, y and z flux volumes agree), the
+// walls alone do not.
+TEST(OffsetPlate, FacesCloseTheWalls) {
+  const Model& m = find_model("offset_plate");
+  const ParameterValues p = resolve_parameters(m);
+  const Fn walls = m.build(p);
+  const std::vector<ModelPatch> faces = offset_plate_faces(p);
+  Eval s(walls), top(faces[0].surface), bottom(faces[1].surface);
+  for (auto [face, v] : {std::pair<Eval*, double>{&top, 1.0}, std::pair<Eval*, double>{&bottom, 0.0}}) {
+    const SpaceCurve edge = [&s, v = v](double u) { return s({u, v}); };
+    const std::vector<SpaceCurve> face_edges = patch_edges(*face);
+    for (const SpaceCurve& e : face_edges)
+      for (int i = 0; i <= 20; ++i) EXPECT_LT(distance_to_curve(edge, e(i / 20.0)), 1e-9) << v << ", " << i;
+    for (int i = 0; i <= 60; ++i) {
+      const auto q = edge(i / 60.0);
+      double d = 1e9;
+      for (const SpaceCurve& e : face_edges) d = std::min(d, distance_to_curve(e, q));
+      EXPECT_LT(d, 1e-9) << v << ", " << i;
+    }
+  }
+  const auto vol = flux_volumes({{walls}, {faces[0].surface}, {faces[1].surface}}, 300);
+  // About the 2 x 1.2 x 0.2 box less its rounded corners, notches and edges.
+  EXPECT_GT(vol[2], 0.3);
+  EXPECT_LT(vol[2], 0.48);
+  // The midpoint rule converges only linearly here (the curve's speed jumps at its knots):
+  // about 1.5e-3 relative at n = 300.
+  EXPECT_NEAR(vol[0], vol[2], 4e-3 * vol[2]);
+  EXPECT_NEAR(vol[1], vol[2], 4e-3 * vol[2]);
+  const auto walls_only = flux_volumes({{walls}}, 300);
+  EXPECT_GT(std::abs(walls_only[2] - walls_only[0]), 0.5 * vol[2]);
+}
+
+// The hairs: 2 hair_rows^2 closed tubes, each around the hair segment of furry_bear_hair
+// (from its scalp point to its tip) extended 2 hair_radius below the scalp: the point at
+// (theta, s) is at distance rho(s) = (27/4) r s (1 - s)^2 from the axis point at s, with
+// poles at the sunk root and at the tip.
+TEST(FurryBear, HairsAreClosedTubesAlongTheHairField) {
+  const Model& m = find_model("furry_bear");
+  const ParameterValues p = resolve_parameters(m, {{"hair_rows", 5}});
+  const std::vector<ModelPatch> hairs = furry_bear_hairs(p);
+  ASSERT_EQ(hairs.size(), 50u);
+  const std::vector<ModelPatch> all = model_patches(m, m.build(p), p);
+  EXPECT_EQ(all.size(), 51u);
+  Eval field(furry_bear_hair(p));
+  const double r = p.at("hair_radius"), length = p.at("hair_length");
+  for (int j = 0; j < 5; ++j)
+    for (int i = 0; i < 10; ++i) {
+      const ModelPatch& hair = hairs[static_cast<std::size_t>(j * 10 + i)];
+      EXPECT_TRUE(hair.periodic_u);
+      const auto h = field({(i + 0.5) / 10, (j + 0.5) / 5});
+      std::vector<double> d(3);
+      for (int k = 0; k < 3; ++k) d[k] = (h[k + 3] - h[k]) / length;
+      EXPECT_NEAR(norm3(d), 1.0, 1e-12);  // the segment has length hair_length
+      Eval tube(hair.surface), normal(cross(derivative(hair.surface, 0), derivative(hair.surface, 1)));
+      for (double s : {0.0, 0.1, 1.0 / 3.0, 0.6, 1.0})
+        for (double a : {0.0, 0.3, 0.71}) {
+          const auto q = tube({a, s});
+          std::vector<double> off(3);
+          for (int k = 0; k < 3; ++k) off[k] = q[k] - (h[k] - 2 * r * d[k] + s * (length + 2 * r) * d[k]);
+          EXPECT_NEAR(norm3(off), 6.75 * r * s * (1 - s) * (1 - s), 1e-12) << s;
+          EXPECT_NEAR(dot3(off, d), 0.0, 1e-12);  // in the plane across the axis
+          if (s > 0 && s < 1) {
+            EXPECT_GT(dot3(normal({a, s}), off), 0.0);  // facing away from the axis
+          }
+        }
+      EXPECT_NEAR(norm3(std::vector<double>{tube({0.4, 1.0 / 3.0})[0] - tube({0.9, 1.0 / 3.0})[0],
+                                            tube({0.4, 1.0 / 3.0})[1] - tube({0.9, 1.0 / 3.0})[1],
+                                            tube({0.4, 1.0 / 3.0})[2] - tube({0.9, 1.0 / 3.0})[2]}),
+                  2 * r, 1e-12);  // opposite points at the thickest place: the diameter
+    }
+}
+
+// The tip of one hair moves with hair_length (along the same direction) and with kappa
+// (toward S_v, the combing).
+TEST(FurryBear, HairsFollowHairLengthAndKappa) {
+  const Model& m = find_model("furry_bear");
+  auto tip = [&](const ParameterValues& overrides, std::size_t k) {
+    const std::vector<ModelPatch> hairs = furry_bear_hairs(resolve_parameters(m, overrides));
+    return at(hairs.at(k).surface, 0.0, 1.0);
+  };
+  auto root = [&](std::size_t k) {
+    return at(furry_bear_hairs(resolve_parameters(m)).at(k).surface, 0.0, 0.0);
+  };
+  for (std::size_t k : {0u, 37u, 150u}) {
+    const auto base = tip({}, k), longer = tip({{"hair_length", 0.2}}, k), straight = tip({{"kappa", 0.0}}, k);
+    const auto r = root(k);
+    // Longer: the tip moves out along the same direction by 0.2 / 0.08.
+    std::vector<double> d0(3), d1(3);
+    for (int i = 0; i < 3; ++i) d0[i] = base[i] - r[i], d1[i] = longer[i] - r[i];
+    EXPECT_GT(norm3(d1), 2.0 * norm3(d0)) << k;
+    EXPECT_NEAR(dot3(d0, d1) / (norm3(d0) * norm3(d1)), 1.0, 1e-3) << k;
+    // kappa = 0: the hair stands along the normal, so its tip moves.
+    double moved = 0.0;
+    for (int i = 0; i < 3; ++i) moved += (straight[i] - base[i]) * (straight[i] - base[i]);
+    EXPECT_GT(std::sqrt(moved), 0.01) << k;
+  }
+}
+
+TEST(FurryBear, HairParametersAreValidated) {
+  const Model& m = find_model("furry_bear");
+  for (const auto& [name, value] : std::vector<std::pair<std::string, double>>{
+           {"hair_rows", 0.0}, {"hair_rows", 15.0}, {"hair_rows", 2.5}, {"hair_radius", 0.0}, {"hair_length", -1.0}}) {
+    const std::string msg = error_of([&] { build_model(m, {{name, value}}); });
+    EXPECT_NE(msg.find("'" + name + "'"), std::string::npos) << name << ": " << msg;
+  }
+  EXPECT_EQ(furry_bear_hairs(resolve_parameters(m, {{"hair_rows", 14}})).size(), 392u);
+}
+
+}  // namespace
+}  // namespace genmod::models
