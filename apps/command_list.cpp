@@ -12,7 +12,8 @@ namespace {
 int run_list(std::span<const std::string> args) {
   if (!args.empty()) throw UsageError("unexpected argument '" + args[0] + "'");
   for (const models::Model& m : models::gallery()) {
-    std::printf("%s\n  %s\n", m.name.c_str(), m.description.c_str());
+    std::printf("%s\n  %s%s\n", m.name.c_str(), m.description.c_str(),
+                m.open ? " (open: its mesh has a boundary)" : "");
     for (const models::ModelParameter& p : m.parameters)
       std::printf("    %-14s %-8g %s\n", p.name.c_str(), p.value, p.doc.c_str());
   }

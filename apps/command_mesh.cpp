@@ -57,8 +57,8 @@ int run_mesh(std::span<const std::string> args) {
     }
   }
   static constexpr std::array<const char*, 1> kFlags{"--no-check"};
-  static constexpr std::array<const char*, 7> kValued{"--res", "-o", "--output", "--tolerance", "--max-leaves",
-                                                      "--threads", "--max-memory"};
+  static constexpr std::array<const char*, 8> kValued{"--res", "-o", "--output", "--tolerance", "--max-leaves",
+                                                      "--threads", "--max-memory", "--max-seconds"};
   const Arguments a(rest, kFlags, kValued);
   if (a.positional().size() != 1)
     throw UsageError(a.positional().empty() ? "missing model name" : "expected one model name, got " +
@@ -110,6 +110,7 @@ int run_mesh(std::span<const std::string> args) {
   // The memory limit as a leaf limit (about kAdaptiveBytesPerLeaf per leaf, measured).
   options.max_leaves = std::min(options.max_leaves, static_cast<std::size_t>(limit_mb * (1 << 20) / kAdaptiveBytesPerLeaf));
   options.threads = a.int_value({"--threads"}, 0, 0, 1024);
+  options.max_seconds = positive_option(a, {"--max-seconds"}, 120.0, true);
   const auto start = std::chrono::steady_clock::now();
   const AdaptiveMesh m = models::mesh_model_adaptive(*model, surface, params, options);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -119,6 +120,9 @@ int run_mesh(std::span<const std::string> args) {
   std::printf("distance to the surface <= %.3g (tolerance %.3g); %zu edges glued, %zu collapsed to a point, %s\n",
               m.distance_bound, options.tolerance, m.glued_edges, m.collapsed_edges,
               m.closed() ? "closed" : (std::to_string(m.boundary_edges) + " boundary edges (open)").c_str());
+  if (m.unbounded_leaves)
+    std::printf("%zu leaves have no finite distance bound (the surface's interval enclosure is unbounded there)\n",
+                m.unbounded_leaves);
   for (const std::string& limit : m.limits_hit) std::printf("limit reached: %s\n", limit.c_str());
   if (a.has("--no-check")) return 0;
   // The file as written is what users get: check that, not the mesh in memory.
@@ -137,6 +141,7 @@ const Command kMeshCommand{
     "  --tolerance E    largest distance between mesh and surface (adaptive kd-tree mesher, the default;\n"
     "                 default 0.001 of the model's size); the certified bound is printed\n"
     "  --max-leaves N   kd-tree leaf limit (default 4000000; reported when reached)\n"
+    "  --max-seconds S  stop refining after S seconds (default 120, 0 = none; reported when reached)\n"
     "  --res N          a uniform N x N lattice instead, 3..4096 (faces not welded)\n"
     "  --max-memory MB  refuse a lattice whose estimated memory is above MB, or stop refining the adaptive\n"
     "                 mesh there (default half the physical memory)\n"

@@ -60,13 +60,19 @@ int main(int argc, char** argv) {
     const Fn surface = model.build(params);
     const std::vector<SurfacePatch> patches = models::model_patches(model, surface, params);
     const double tol = rel * models::model_extent(model, surface, params);
-    AdaptiveMeshOptions adaptive_options{.tolerance = tol, .max_leaves = 2'000'000, .threads = 1};
+    AdaptiveMeshOptions adaptive_options{.tolerance = tol, .max_leaves = 2'000'000, .max_seconds = 20, .threads = 1};
     const Run adaptive = timed(patches, adaptive_options, 3);
+    if (!adaptive.mesh.limits_hit.empty() || !std::isfinite(adaptive.mesh.distance_bound)) {
+      std::printf("%-24s %10.3g  adaptive stopped at a limit (%s), bound %g: not compared\n", model.name.c_str(), tol,
+                  adaptive.mesh.limits_hit.empty() ? "unbounded leaves" : adaptive.mesh.limits_hit.front().c_str(),
+                  adaptive.mesh.distance_bound);
+      continue;
+    }
     // Uniform: split every leaf until it is 2^-k of the domain on both axes.
     Run uniform;
     int k = 2;
     for (; k <= 11; ++k) {
-      AdaptiveMeshOptions o{.tolerance = 1e300, .max_depth = k, .max_leaves = 8'000'000, .threads = 1};
+      AdaptiveMeshOptions o{.tolerance = 1e300, .max_depth = k, .max_leaves = 8'000'000, .max_seconds = 20, .threads = 1};
       const double side = std::ldexp(1.0, -k);
       o.refine = [&patches, side](std::size_t p, const Interval& u, const Interval& v) {
         return (u.hi() - u.lo()) > side * (patches[p].u.hi() - patches[p].u.lo()) * 1.0000001 ||

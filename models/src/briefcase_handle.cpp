@@ -34,6 +34,7 @@ namespace detail {
 Model briefcase_handle_model() {
   Model m;
   m.name = "briefcase_handle";
+  m.open = true;  // a surface with a boundary, as in the thesis, not a closed object
   m.description = "thesis Fig 3.5: rail product of a rounded grip cross section between two nested arch rails";
   m.parameters = {{"width", 2.0, "span of the outer arch along x (the inner arch spans 0.76 of it)"},
                   {"height", 1.0, "height of the outer arch along y (the inner arch reaches 0.72 of it)"},

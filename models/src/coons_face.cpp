@@ -1,6 +1,7 @@
 // Coons patch caps (see coons_face.hpp).
 #include "coons_face.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -8,10 +9,14 @@ namespace genmod::models::detail {
 
 namespace {
 
-// edge at the parameter a + (b - a) x(i), wrapped into [0, 1): an arc may cross u = 0.
+// edge at the parameter a + (b - a) x(i), wrapped into [0, 1]: an arc may cross u = 1. The
+// wrap is a select between the two in-range pieces, not w - floor(w): the edge curve is closed,
+// so the arc is continuous there, and each piece's interval bound stays tight (floor's jump
+// would make every box around the wrap enclose the whole curve).
 Fn edge_arc(const Fn& edge, double a, double b, int i) {
   const Fn w = a + (b - a) * x(i);
-  return compose(edge, 0, w - floor(w));
+  if (std::min(a, b) >= 0.0 && std::max(a, b) <= 1.0) return compose(edge, 0, w);
+  return select(w < 1.0, compose(edge, 0, min(w, Fn(1.0))), compose(edge, 0, max(w - 1.0, Fn(0.0))));
 }
 
 }  // namespace

@@ -65,6 +65,7 @@ namespace detail {
 Model cpg_model() {
   Model m;
   m.name = "cpg";
+  m.open = true;  // a surface with a boundary, as in the thesis, not a closed object
   m.description = "thesis Fig 3.16: Boolean operation on planar regions (circle, bean), extruded";
   m.parameters = region_parameters({"operation", 2.0, "0 = union, 1 = intersection, 2 = circle minus bean"});
   m.build = [](const ParameterValues& p) { return prism(cpg_boundary(p), p); };
@@ -75,6 +76,7 @@ Model cpg_model() {
 Model cpg_fillet_model() {
   Model m;
   m.name = "cpg_fillet";
+  m.open = true;  // a surface with a boundary, as in the thesis, not a closed object
   m.description = "thesis Fig 3.18: union of the CPG regions with circular fillets at the corners, extruded";
   m.parameters = region_parameters({"fillet_radius", 0.08, "radius of the fillet arcs (> 0)"});
   m.build = [](const ParameterValues& p) { return prism(cpg_boundary(p), p); };

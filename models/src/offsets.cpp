@@ -32,6 +32,7 @@ namespace detail {
 Model offsets_model() {
   Model m;
   m.name = "offsets";
+  m.open = true;  // a surface with a boundary, as in the thesis, not a closed object
   m.description = "thesis Fig 3.11: a smooth closed curve and its offsets by r in [-r_max, r_max] (z = r)";
   m.parameters = {{"r_max", 0.25,
                    "largest offset distance (the thesis shows 0.1 and 0.25), in (0, 0.35]: "

@@ -61,6 +61,7 @@ namespace detail {
 Model screwdriver_phillips_model() {
   Model m;
   m.name = "screwdriver_phillips";
+  m.open = true;  // a surface with a boundary, as in the thesis, not a closed object
   m.description = "thesis Fig 3.17 / App. B.2: Phillips tip, a shrinking disk minus four 90-degree wedges (CPG path, mirrored)";
   m.parameters = {{"depth_scale", 1.0, "multiplies the wedge-vertex distance D (depth curve), in (0, 1.5]"},
                   {"length", 1.0, "multiplies the height z of the sections (the tip is at z = 0)"}};

@@ -56,6 +56,7 @@ namespace detail {
 Model screwdriver_regular_model() {
   Model m;
   m.name = "screwdriver_regular";
+  m.open = true;  // a surface with a boundary, as in the thesis, not a closed object
   m.description = "thesis Fig 3.17 / App. B.2: regular screwdriver tip, a disk minus two half-planes (CPG path)";
   m.parameters = {{"tip_width", 0.015, "blade width at the tip (z = 0), < 2 radius"},
                   {"blade_width", 0.75, "blade width at z = 1 (the width is linear in z), < 2 radius"},

@@ -81,6 +81,7 @@ namespace detail {
 Model sphere_cylinder_fillet_model() {
   Model m;
   m.name = "sphere_cylinder_fillet";
+  m.open = true;  // a surface with a boundary, as in the thesis, not a closed object
   m.description = "thesis Fig 3.9 / App. B.1: Hermite fillet from the top of a horizontal cylinder to the bottom of a sphere, G1 at both ends";
   m.parameters = {{"bulge", 0.5, "the thesis's w in [0, 1]: tangent magnitude z = interp(w, 0.01, 1) at both ends"},
                   {"cylinder_radius", 0.6, "radius of the cylinder about the x axis"},

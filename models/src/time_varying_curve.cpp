@@ -49,6 +49,7 @@ namespace detail {
 Model time_varying_curve_model() {
   Model m;
   m.name = "time_varying_curve";
+  m.open = true;  // a surface with a boundary, as in the thesis, not a closed object
   m.description = "thesis Fig 3.21: a sinusoid with moving phase, truncated at fixed arclength, as a space-time surface (x, y, t)";
   m.parameters = {{"arclength", 1.0, "the thesis's lambda: arclength of every time slice of the curve"},
                   {"amplitude", 0.5, "a in c(u, t) = (u, a u^2 sin(2 pi (t - phase_lag u)))"},

@@ -22,6 +22,7 @@ namespace detail {
 Model turbine_blade_model() {
   Model m;
   m.name = "turbine_blade";
+  m.open = true;  // a surface with a boundary, as in the thesis, not a closed object
   m.description = "thesis Fig 3.7: quasi-linear sweep of an airfoil: scaled, twisted about a pivot, extruded along z";
   m.parameters = {{"twist", 1.0, "multiplier of the twist schedule: the section at v turns by twist pi bladerot(v) (1 = 45 degrees at the tip)"},
                   {"pivot", 0.5, "x of the twist axis: the scaled section turns about (pivot, 0)"},

@@ -46,6 +46,7 @@ namespace detail {
 Model wing_model() {
   Model m;
   m.name = "wing";
+  m.open = true;  // a surface with a boundary, as in the thesis, not a closed object
   m.description = "thesis Fig 3.22: wire product of a tapered ellipse along the time-varying curve at a given time";
   m.parameters = {{"time", 0.15, "time t of the flap (period 1; the figure shows t in [-0.1, 0.9], upstroke to 0.4)"},
                   {"arclength", 1.0, "span: arclength of the spar (the time-varying curve's lambda)"},

@@ -31,6 +31,7 @@ void check_input(const std::vector<SurfacePatch>& patches, const AdaptiveMeshOpt
   if (patches.empty()) throw std::invalid_argument(who + "no patches to mesh");
   if (!(std::isfinite(o.tolerance) && o.tolerance > 0.0))
     throw std::invalid_argument(who + "tolerance must be a positive finite number, got " + std::to_string(o.tolerance));
+  if (o.unbounded_depth < 0) throw std::invalid_argument(who + "unbounded_depth must be >= 0");
   if (o.max_depth < 0 || o.max_depth > parametric::kGridBits - 2)
     throw std::invalid_argument(who + "max_depth must be in [0, " + std::to_string(parametric::kGridBits - 2) +
                                 "], got " + std::to_string(o.max_depth));
@@ -69,7 +70,10 @@ AdaptiveMesh mesh_adaptive(const std::vector<SurfacePatch>& patches, const Adapt
     result.limits_hit = tree.limits_hit;
     for (const auto& leaves : tree.leaves) {
       result.leaves += leaves.size();
-      for (const parametric::Leaf& l : leaves) result.distance_bound = std::max(result.distance_bound, l.bound);
+      for (const parametric::Leaf& l : leaves) {
+        result.distance_bound = std::max(result.distance_bound, l.bound);
+        if (!std::isfinite(l.bound)) ++result.unbounded_leaves;
+      }
     }
     const parametric::EdgeTopology topology = parametric::find_edge_topology(patches, compiled, options);
     for (const auto& g : topology.glues) result.glued_edges += g.a == g.b ? 1 : 2;

@@ -5,6 +5,7 @@
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/tessellate/parametric_mesher.hpp"
 #include "genmod/tessellate/validate.hpp"
+#include "tessellate/point_triangle_distance.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,45 +23,8 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 const Fn U = x(0), V = x(1);
 
-using Vec3 = std::array<double, 3>;
-
-Vec3 sub(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
-// Distance from p to triangle abc (Ericson's closest-point regions).
-double point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
-  auto at = [&](double s, double t) {
-    const Vec3 q{a[0] + s * ab[0] + t * ac[0], a[1] + s * ab[1] + t * ac[1], a[2] + s * ab[2] + t * ac[2]};
-    return std::sqrt(dot(sub(p, q), sub(p, q)));
-  };
-  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0) return at(0, 0);
-  const Vec3 bp = sub(p, b);
-  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3) return at(1, 0);
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return at(d1 / (d1 - d3), 0);
-  const Vec3 cp = sub(p, c);
-  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6) return at(0, 1);
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return at(0, d2 / (d2 - d6));
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return at(1 - w, w);
-  }
-  const double denom = 1 / (va + vb + vc);
-  return at(vb * denom, vc * denom);
-}
-
-double distance_to_mesh(const Vec3& p, const Mesh& m) {
-  double best = INFINITY;
-  for (const auto& t : m.triangles)
-    best = std::min(best, point_triangle_distance(p, m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]));
-  return best;
-}
+using testing_support::distance_to_mesh;
+using testing_support::Vec3;
 
 // The largest distance from random surface points to the mesh.
 double surface_to_mesh(const SurfacePatch& patch, const Mesh& mesh, int samples, unsigned seed) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace genmod::parametric {
 
@@ -29,6 +30,19 @@ bool on_edge(int side, const GridPoint& p) {
   }
 }
 
+std::int64_t Glue::to_a(std::int64_t t) const {
+  if (reversed) t = kGridSize - t;
+  if (a_lo == 0 && a_hi == kGridSize) return t;
+  return a_lo + static_cast<std::int64_t>(std::llround(static_cast<long double>(t) * (a_hi - a_lo) / kGridSize));
+}
+
+std::int64_t Glue::to_b(std::int64_t t) const {
+  std::int64_t on_b = t;
+  if (!(a_lo == 0 && a_hi == kGridSize))
+    on_b = static_cast<std::int64_t>(std::llround(static_cast<long double>(t - a_lo) * kGridSize / (a_hi - a_lo)));
+  return reversed ? kGridSize - on_b : on_b;
+}
+
 namespace {
 
 constexpr int kSamples = 33;
@@ -43,6 +57,63 @@ struct EdgeSamples {
   std::array<Point3, kSamples> at;
   bool finite = true;
 };
+
+Point3 eval_edge(const EdgeRef& e, double t, const std::vector<CompiledPatch>& compiled, PointEvaluator& ev) {
+  const CompiledPatch& c = compiled[e.patch];
+  const bool along_u = e.side == 0 || e.side == 2;
+  const double fixed = (e.side == 1 || e.side == 2) ? 1.0 : 0.0;
+  const double fu = along_u ? t : fixed, fv = along_u ? fixed : t;
+  const double uv[2] = {fu >= 1.0 ? c.u.hi() : c.u.lo() + (c.u.hi() - c.u.lo()) * fu,
+                        fv >= 1.0 ? c.v.hi() : c.v.lo() + (c.v.hi() - c.v.lo()) * fv};
+  const auto s = ev.eval(c.value, uv);
+  return {s[0], s[1], s[2]};
+}
+
+// The parameter (fraction of the edge) of a's point nearest to p, if within eps.
+std::optional<double> locate(const EdgeSamples& a, const Point3& p, const std::vector<CompiledPatch>& compiled,
+                             double eps, PointEvaluator& ev) {
+  int best = 0;
+  for (int k = 1; k < kSamples; ++k)
+    if (distance(a.at[k], p) < distance(a.at[best], p)) best = k;
+  // Golden-section search on the two sample intervals around the nearest sample.
+  double lo = std::max(0, best - 1) / double(kSamples - 1), hi = std::min(kSamples - 1, best + 1) / double(kSamples - 1);
+  auto f = [&](double t) { return distance(eval_edge(a.edge, t, compiled, ev), p); };
+  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo), f1 = f(x1), f2 = f(x2);
+  for (int it = 0; it < 80 && hi - lo > 1e-15; ++it) {
+    if (f1 < f2) {
+      hi = x2, x2 = x1, f2 = f1, x1 = hi - g * (hi - lo), f1 = f(x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2, x2 = lo + g * (hi - lo), f2 = f(x2);
+    }
+  }
+  double t = 0.5 * (lo + hi);
+  // Ends of the edge and grid points are preferred when they are as good.
+  for (double c : {0.0, 1.0, std::round(t * kGridSize) / kGridSize})
+    if (f(c) <= eps) {
+      if (c == 0.0 || c == 1.0 || std::abs(c - t) < 1e-9) t = c;
+    }
+  if (!(f(t) <= eps)) return std::nullopt;
+  return t;
+}
+
+// Edge b glued to a part of edge a, when b's samples lie on a at linearly mapped parameters.
+std::optional<Glue> match_part(const EdgeSamples& a, const EdgeSamples& b, const std::vector<CompiledPatch>& compiled,
+                               double eps, PointEvaluator& ev) {
+  const std::optional<double> start = locate(a, b.at[0], compiled, eps, ev);
+  if (!start) return std::nullopt;
+  const std::optional<double> end = locate(a, b.at[kSamples - 1], compiled, eps, ev);
+  if (!end || std::abs(*end - *start) < 1e-6) return std::nullopt;
+  Glue g{a.edge, b.edge, *end < *start, 0, kGridSize};
+  g.a_lo = std::llround(std::min(*start, *end) * kGridSize);
+  g.a_hi = std::llround(std::max(*start, *end) * kGridSize);
+  for (int k = 1; k + 1 < kSamples; ++k) {
+    const std::int64_t tb = (kGridSize / (kSamples - 1)) * k;
+    const double ta = std::ldexp(static_cast<double>(g.to_a(tb)), -kGridBits);
+    if (!(distance(eval_edge(a.edge, ta, compiled, ev), b.at[k]) <= eps)) return std::nullopt;
+  }
+  return g;
+}
 
 }  // namespace
 
@@ -91,7 +162,7 @@ EdgeTopology find_edge_topology(const std::vector<SurfacePatch>& patches, const 
       if (!(distance(a.at[k], b.at[reversed ? kSamples - 1 - k : k]) <= eps)) return false;
     return true;
   };
-  std::vector<bool> used(edges.size(), false);
+  std::vector<bool> used(edges.size(), false), partly_used(edges.size(), false);
   for (std::size_t i = 0; i < edges.size(); ++i) {
     bool point = true;
     for (int k = 1; k < kSamples && point; ++k) point = distance(edges[i].at[0], edges[i].at[k]) <= eps;
@@ -111,6 +182,19 @@ EdgeTopology find_edge_topology(const std::vector<SurfacePatch>& patches, const 
           break;
         }
       if (used[i]) break;
+    }
+  }
+  // Parts: a free edge b whose ends lie on another edge a.
+  for (std::size_t j = 0; j < edges.size(); ++j) {
+    if (used[j]) continue;
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+      if (i == j || (used[i] && !partly_used[i])) continue;
+      const std::optional<Glue> g = match_part(edges[i], edges[j], compiled, eps, ev);
+      if (!g) continue;
+      topology.glues.push_back(*g);
+      used[j] = true;
+      used[i] = partly_used[i] = true;
+      break;
     }
   }
   return topology;

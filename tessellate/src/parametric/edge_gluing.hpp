@@ -1,11 +1,16 @@
 // Which patch edges are one curve of the surface (a seam) or one point (a pole).
 //
 // Edge `side` of a patch: 0 is v = v.lo (running along u), 1 is u = u.hi (along v), 2 is
-// v = v.hi (along u), 3 is u = u.lo (along v). A glue identifies grid index t on edge a with
-// t (or kGridSize - t when reversed) on edge b. Periodic axes are glued by declaration; other
-// edges by geometry (with options.glue_edges): two edges are glued when their samples at 33
-// evenly spaced parameters agree within the glue tolerance, directly or reversed, and an edge
-// collapses when all its samples do.
+// v = v.hi (along u), 3 is u = u.lo (along v). A glue identifies the whole edge b with the
+// part [a_lo, a_hi] of edge a, linearly in grid indices (reversed: b's start at a_hi).
+// Periodic axes are glued by declaration; other edges by geometry (with options.glue_edges):
+//  - an edge collapses to a point when its samples at 33 evenly spaced parameters agree;
+//  - two whole edges are glued when their samples agree, directly or reversed;
+//  - a remaining edge b is glued to a part of another edge a (a cap fills a wall's rim in
+//    several pieces) when b's ends lie on a's curve and b's samples agree with a's at the
+//    linearly mapped parameters.
+// Parameters mapped between edges are rounded to the grid (2^-30 of the range); the mesher
+// measures the resulting deviation.
 #pragma once
 
 #include "kd_subdivision.hpp"
@@ -24,6 +29,11 @@ struct EdgeRef {
 struct Glue {
   EdgeRef a, b;
   bool reversed = false;
+  std::int64_t a_lo = 0, a_hi = kGridSize;
+
+  // Grid index on a of index t on b, and back (t on a within [a_lo, a_hi]).
+  std::int64_t to_a(std::int64_t t) const;
+  std::int64_t to_b(std::int64_t t) const;
 };
 
 struct EdgeTopology {

@@ -81,7 +81,8 @@ struct NodeBounder {
     if (r.bound <= o.tolerance && !refine) return r;
     // Split the direction along which the piece is longer (the parameter extent when the
     // Jacobian has no finite bound), within the depth limit.
-    const bool can_u = n.depth_u < o.max_depth, can_v = n.depth_v < o.max_depth;
+    const int depth_limit = std::isfinite(r.bound) ? o.max_depth : std::min(o.max_depth, o.unbounded_depth);
+    const bool can_u = n.depth_u < depth_limit, can_v = n.depth_v < depth_limit;
     if (!can_u && !can_v) return r;  // accepted at the depth limit
     bool split_u = jacobian_ok ? len_u >= len_v : (n.rect.u1 - n.rect.u0) >= (n.rect.v1 - n.rect.v0);
     if (!can_u) split_u = false;
@@ -120,8 +121,8 @@ Subdivision subdivide(const std::vector<CompiledPatch>& patches, const AdaptiveM
       const Node& n = level[i];
       if (verdicts[i].verdict != Verdict::Accept) {
         ++splits;
-      } else if (verdicts[i].bound > options.tolerance && n.depth_u >= options.max_depth &&
-                 n.depth_v >= options.max_depth) {
+      } else if (verdicts[i].bound > options.tolerance && std::isfinite(verdicts[i].bound) &&
+                 n.depth_u >= options.max_depth && n.depth_v >= options.max_depth) {
         depth_hit = true;
       }
     }

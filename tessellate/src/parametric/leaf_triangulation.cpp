@@ -66,19 +66,21 @@ LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leave
     }
   for (GridLines& g : lines) g.finish();
   // Exchange the points of glued edges (each edge is glued at most once, so once is enough).
-  auto mapped = [](const Glue& g, std::int64_t t) { return g.reversed ? kGridSize - t : t; };
+  // Each glue adds b's points to its part of a and that part's points to b.
+  auto add_sorted = [](std::vector<std::int64_t>& line, const std::vector<std::int64_t>& more) {
+    line.insert(line.end(), more.begin(), more.end());
+    std::sort(line.begin(), line.end());
+    line.erase(std::unique(line.begin(), line.end()), line.end());
+  };
   for (const Glue& g : topology.glues) {
     std::vector<std::int64_t>& a = lines[g.a.patch].edge_line(g.a.side);
     std::vector<std::int64_t>& b = lines[g.b.patch].edge_line(g.b.side);
-    std::vector<std::int64_t> merged = a;
-    for (std::int64_t t : b) merged.push_back(mapped(g, t));
-    std::sort(merged.begin(), merged.end());
-    merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
-    std::vector<std::int64_t> merged_b;
-    for (std::int64_t t : merged) merged_b.push_back(mapped(g, t));
-    std::sort(merged_b.begin(), merged_b.end());
-    a = std::move(merged);
-    b = std::move(merged_b);
+    std::vector<std::int64_t> to_a, to_b;
+    for (std::int64_t t : b) to_a.push_back(g.to_a(t));
+    for (auto it = std::lower_bound(a.begin(), a.end(), g.a_lo); it != a.end() && *it <= g.a_hi; ++it)
+      to_b.push_back(g.to_b(*it));
+    add_sorted(a, to_a);
+    add_sorted(b, to_b);
   }
 
   // One polygon per leaf, as grid points; then index them.
@@ -123,9 +125,17 @@ LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leave
 
   // Seams and poles: points that are one surface point share the smallest as representative.
   UnionFind sets(out.points.size());
-  for (const Glue& g : topology.glues)
-    for (std::int64_t t : lines[g.a.patch].edge_line(g.a.side))
-      sets.unite(index(edge_point(g.a, t)), index(edge_point(g.b, mapped(g, t))));
+  // Both directions: a mapping rounded to the grid need not be its own inverse.
+  auto unite_points = [&](const GridPoint& p, const GridPoint& q) {
+    const std::uint32_t i = index(p), j = index(q);
+    if (i < out.points.size() && out.points[i] == p && j < out.points.size() && out.points[j] == q) sets.unite(i, j);
+  };
+  for (const Glue& g : topology.glues) {
+    for (std::int64_t t : lines[g.b.patch].edge_line(g.b.side)) unite_points(edge_point(g.b, t), edge_point(g.a, g.to_a(t)));
+    const std::vector<std::int64_t>& a = lines[g.a.patch].edge_line(g.a.side);
+    for (auto it = std::lower_bound(a.begin(), a.end(), g.a_lo); it != a.end() && *it <= g.a_hi; ++it)
+      unite_points(edge_point(g.a, *it), edge_point(g.b, g.to_b(*it)));
+  }
   for (const EdgeRef& e : topology.collapsed) {
     const std::vector<std::int64_t>& line = lines[e.patch].edge_line(e.side);
     for (std::int64_t t : line) sets.unite(index(edge_point(e, line.front())), index(edge_point(e, t)));

@@ -64,6 +64,10 @@ struct AdaptiveMeshOptions {
   LeafBound bound = LeafBound::Best;
   // Limits, reported in AdaptiveMesh::limits_hit when reached ("depth", "leaves", "time").
   int max_depth = 24;                 // splits per parameter axis (a leaf is >= 2^-24 of the range)
+  // Where the interval bounds are not finite (an operator without a finite enclosure there),
+  // splitting may never give a bound: such leaves are split to this depth per axis only,
+  // then kept and counted in AdaptiveMesh::unbounded_leaves (distance_bound is then infinite).
+  int unbounded_depth = 8;
   std::size_t max_leaves = 4'000'000;  // over all patches
   double max_seconds = 0.0;           // 0: no time limit
   bool glue_edges = true;             // find edges that coincide or collapse (see above)
@@ -78,6 +82,7 @@ struct AdaptiveMesh {
   Mesh mesh;
   double distance_bound = 0.0;    // certified, see above (infinite if a leaf had no finite bound)
   std::size_t leaves = 0;
+  std::size_t unbounded_leaves = 0;  // leaves without a finite distance bound (see above)
   std::size_t interval_evaluations = 0;
   std::size_t glued_edges = 0, collapsed_edges = 0;  // patch edges glued to another / to a point
   std::size_t dropped_triangles = 0;                 // with a repeated vertex (at poles)

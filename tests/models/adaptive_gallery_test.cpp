@@ -1,0 +1,74 @@
+// The gallery meshed by the adaptive mesher, as users get it: every closed model closed,
+// 2-manifold, outward and free of self-intersections (validate, CGAL), within the certified
+// distance of its surface (checked against surface samples); every open model manifold and
+// consistently oriented with its boundary reported.
+#include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/models/gallery.hpp"
+#include "genmod/tessellate/validate.hpp"
+#include "tessellate/point_triangle_distance.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <string>
+
+namespace genmod::models {
+namespace {
+
+// Models whose adaptive mesh is not yet what it must be (each named in the note):
+// caps not glued to the walls (key, offset_plate: a part-edge glue fails and the offset's
+// enclosure is unbounded in places), hairs that enter the scalp (furry_bear: several closed
+// surfaces that overlap need CSG), and operators whose interval enclosures are too slow or
+// loose for refinement in a test's time (bottle, spoon, cross_section_matching,
+// time_varying_curve).
+const std::set<std::string> kKnownDefects{"key", "offset_plate", "furry_bear", "bottle", "spoon",
+                                          "cross_section_matching", "time_varying_curve"};
+
+class AdaptiveGallery : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(AdaptiveGallery, MeshIsCleanAndWithinItsBound) {
+  const Model& model = find_model(GetParam());
+  const ParameterValues p = resolve_parameters(model);
+  const Fn surface = model.build(p);
+  const double tol = 3e-3 * model_extent(model, surface, p);
+  const AdaptiveMesh m = mesh_model_adaptive(model, surface, p, {.tolerance = tol, .max_seconds = 60});
+  ASSERT_TRUE(m.limits_hit.empty()) << model.name << ": limit " << m.limits_hit.front();
+  EXPECT_LE(m.distance_bound, tol);
+  const MeshValidity v = validate(m.mesh);
+  EXPECT_TRUE(v.manifold()) << describe(v);
+  EXPECT_TRUE(v.oriented()) << describe(v);
+  EXPECT_EQ(v.degenerate_triangles, 0u) << describe(v);
+  EXPECT_EQ(v.self_intersections, 0u) << describe(v);
+  if (model.open) {
+    EXPECT_GT(v.boundary_edges, 0u) << model.name << " is listed as open";
+  } else {
+    EXPECT_TRUE(v.valid()) << describe(v);
+  }
+  // Surface samples lie within the certified bound of the mesh.
+  std::mt19937 rng(11);
+  PointEvaluator ev;
+  for (const SurfacePatch& patch : model_patches(model, surface, p)) {
+    const Tape tape(patch.surface, std::vector<int>{0, 1});
+    std::uniform_real_distribution<double> su(patch.u.lo(), patch.u.hi()), sv(patch.v.lo(), patch.v.hi());
+    for (int i = 0; i < 40; ++i) {
+      const auto s = ev.eval(tape, {su(rng), sv(rng)});
+      ASSERT_LE(testing_support::distance_to_mesh({s[0], s[1], s[2]}, m.mesh), m.distance_bound) << model.name;
+    }
+  }
+}
+
+std::vector<std::string> checked_models() {
+  std::vector<std::string> names;
+  for (const Model& m : gallery())
+    if (!kKnownDefects.count(m.name)) names.push_back(m.name);
+  return names;
+}
+
+INSTANTIATE_TEST_SUITE_P(Gallery, AdaptiveGallery, ::testing::ValuesIn(checked_models()),
+                         [](const auto& test) { return test.param; });
+
+}  // namespace
+}  // namespace genmod::models
