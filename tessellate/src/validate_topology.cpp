@@ -1,5 +1,6 @@
 // The combinatorial half of validate(): edges, manifoldness, orientation consistency,
 // components, Euler characteristics, volumes. No CGAL here.
+#include "union_find.hpp"
 #include "validate_internal.hpp"
 
 #include <algorithm>
@@ -9,19 +10,7 @@
 namespace genmod::validation {
 namespace {
 
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+using tessellate_detail::UnionFind;
 
 // One directed edge of a triangle, keyed by its undirected vertex pair.
 struct HalfEdge {

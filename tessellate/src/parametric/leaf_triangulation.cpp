@@ -2,11 +2,14 @@
 // leaf and a union-find over the points for seams and poles.
 #include "leaf_triangulation.hpp"
 
+#include "union_find.hpp"
+
 #include <algorithm>
-#include <numeric>
 #include <unordered_map>
 
 namespace genmod::parametric {
+
+using tessellate_detail::UnionFind;
 
 namespace {
 
@@ -40,20 +43,6 @@ template <class Emit>
 void points_between(const std::vector<std::int64_t>& line, std::int64_t lo, std::int64_t hi, Emit&& emit) {
   for (auto it = std::lower_bound(line.begin(), line.end(), lo); it != line.end() && *it < hi; ++it) emit(*it);
 }
-
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a), b = find(b);
-    if (a < b) parent[b] = a;
-    else if (b < a) parent[a] = b;
-  }
-};
 
 }  // namespace
 
