@@ -60,6 +60,21 @@ TEST_P(AdaptiveGallery, MeshIsCleanAndWithinItsBound) {
   }
 }
 
+// A solid swept all the way around: its first and last faces coincide inside it and are left
+// out, so the beam is one closed ring (the lattice gave thousands of non-manifold edges).
+TEST(AdaptiveGallerySolid, FullCircleBeamIsOneClosedRing) {
+  const Model& beam = find_model("circular_beam");
+  const ParameterValues p = resolve_parameters(beam, {{"angle", 2.0 * 3.141592653589793}});
+  const Fn solid = beam.build(p);
+  EXPECT_EQ(model_patches(beam, solid, p).size(), 4u);
+  const AdaptiveMesh m = mesh_model_adaptive(beam, solid, p, {.tolerance = 3e-3});
+  const MeshValidity v = validate(m.mesh);
+  EXPECT_TRUE(v.valid()) << describe(v);
+  EXPECT_EQ(v.euler_characteristic, 0);
+  // Pappus: width x height x radius x angle.
+  EXPECT_NEAR(v.volume, 0.2 * 0.1 * 1.0 * 2.0 * 3.141592653589793, 0.01 * v.volume);
+}
+
 std::vector<std::string> checked_models() {
   std::vector<std::string> names;
   for (const Model& m : gallery())
