@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -76,7 +77,9 @@ AdaptiveMesh mesh_adaptive(const std::vector<SurfacePatch>& patches, const Adapt
       }
     }
     const parametric::EdgeTopology topology = parametric::find_edge_topology(patches, compiled, options);
-    for (const auto& g : topology.glues) result.glued_edges += g.a == g.b ? 1 : 2;
+    std::set<std::pair<std::uint32_t, int>> glued;
+    for (const auto& g : topology.glues) glued.insert({g.a.patch, g.a.side}), glued.insert({g.b.patch, g.b.side});
+    result.glued_edges = glued.size();
     result.collapsed_edges = topology.collapsed.size();
     const parametric::LeafTriangulation tri = parametric::triangulate_leaves(tree.leaves, topology);
 

@@ -30,18 +30,22 @@ bool on_edge(int side, const GridPoint& p) {
   }
 }
 
-std::int64_t Glue::to_a(std::int64_t t) const {
-  if (reversed) t = kGridSize - t;
-  if (a_lo == 0 && a_hi == kGridSize) return t;
-  return a_lo + static_cast<std::int64_t>(std::llround(static_cast<long double>(t) * (a_hi - a_lo) / kGridSize));
+namespace {
+
+// from_lo + (t - lo) (to_hi - to_lo) / (hi - lo), flipped when reversed, rounded to the grid.
+std::int64_t map_range(std::int64_t t, std::int64_t lo, std::int64_t hi, std::int64_t to_lo, std::int64_t to_hi,
+                       bool reversed) {
+  if (!reversed && lo == to_lo && hi == to_hi) return t;
+  if (reversed && lo == 0 && hi == kGridSize && to_lo == 0 && to_hi == kGridSize) return kGridSize - t;
+  long double f = static_cast<long double>(t - lo) / static_cast<long double>(hi - lo);
+  if (reversed) f = 1.0L - f;
+  return to_lo + static_cast<std::int64_t>(std::llround(f * static_cast<long double>(to_hi - to_lo)));
 }
 
-std::int64_t Glue::to_b(std::int64_t t) const {
-  std::int64_t on_b = t;
-  if (!(a_lo == 0 && a_hi == kGridSize))
-    on_b = static_cast<std::int64_t>(std::llround(static_cast<long double>(t - a_lo) * kGridSize / (a_hi - a_lo)));
-  return reversed ? kGridSize - on_b : on_b;
-}
+}  // namespace
+
+std::int64_t Glue::to_a(std::int64_t t) const { return map_range(t, b_lo, b_hi, a_lo, a_hi, reversed); }
+std::int64_t Glue::to_b(std::int64_t t) const { return map_range(t, a_lo, a_hi, b_lo, b_hi, reversed); }
 
 namespace {
 
@@ -97,22 +101,40 @@ std::optional<double> locate(const EdgeSamples& a, const Point3& p, const std::v
   return t;
 }
 
-// Edge b glued to a part of edge a, when b's samples lie on a at linearly mapped parameters.
-std::optional<Glue> match_part(const EdgeSamples& a, const EdgeSamples& b, const std::vector<CompiledPatch>& compiled,
-                               double eps, PointEvaluator& ev) {
-  const std::optional<double> start = locate(a, b.at[0], compiled, eps, ev);
-  if (!start) return std::nullopt;
-  const std::optional<double> end = locate(a, b.at[kSamples - 1], compiled, eps, ev);
-  if (!end || std::abs(*end - *start) < 1e-6) return std::nullopt;
-  Glue g{a.edge, b.edge, *end < *start, 0, kGridSize};
-  g.a_lo = std::llround(std::min(*start, *end) * kGridSize);
-  g.a_hi = std::llround(std::max(*start, *end) * kGridSize);
-  for (int k = 1; k + 1 < kSamples; ++k) {
+// True when b's samples in [b_lo, b_hi] lie on a at the glue's mapped parameters.
+bool verified(const Glue& g, const EdgeSamples& a, const EdgeSamples& b, const std::vector<CompiledPatch>& compiled,
+              double eps, PointEvaluator& ev) {
+  for (int k = 0; k < kSamples; ++k) {
     const std::int64_t tb = (kGridSize / (kSamples - 1)) * k;
+    if (tb < g.b_lo || tb > g.b_hi) continue;
     const double ta = std::ldexp(static_cast<double>(g.to_a(tb)), -kGridBits);
-    if (!(distance(eval_edge(a.edge, ta, compiled, ev), b.at[k]) <= eps)) return std::nullopt;
+    if (!(distance(eval_edge(a.edge, ta, compiled, ev), b.at[k]) <= eps)) return false;
   }
-  return g;
+  return true;
+}
+
+// Edge b glued to a part of edge a (one glue, or two across a's periodic seam), when b's
+// samples lie on a at linearly mapped parameters.
+std::vector<Glue> match_part(const EdgeSamples& a, bool a_wraps, const EdgeSamples& b,
+                             const std::vector<CompiledPatch>& compiled, double eps, PointEvaluator& ev) {
+  const std::optional<double> start = locate(a, b.at[0], compiled, eps, ev);
+  if (!start) return {};
+  const std::optional<double> end = locate(a, b.at[kSamples - 1], compiled, eps, ev);
+  if (!end || std::abs(*end - *start) < 1e-6) return {};
+  const std::int64_t s = std::llround(*start * kGridSize), e = std::llround(*end * kGridSize);
+  Glue g{a.edge, b.edge, e < s, std::min(s, e), std::max(s, e)};
+  if (verified(g, a, b, compiled, eps, ev)) return {g};
+  if (!a_wraps) return {};
+  // The other way round a's loop: through its seam (a at 0 = a at 1), where b is at t.
+  const std::optional<double> seam = locate(b, a.at[0], compiled, eps, ev);
+  if (!seam) return {};
+  const std::int64_t t = std::llround(*seam * kGridSize);
+  if (t <= 0 || t >= kGridSize) return {};
+  // s > e: b runs up from s to the seam, then up from 0 to e; s < e: down to 0, down from 1.
+  Glue first{a.edge, b.edge, s < e, s > e ? s : 0, s > e ? kGridSize : s, 0, t};
+  Glue second{a.edge, b.edge, s < e, s > e ? 0 : e, s > e ? e : kGridSize, t, kGridSize};
+  if (!verified(first, a, b, compiled, eps, ev) || !verified(second, a, b, compiled, eps, ev)) return {};
+  return {first, second};
 }
 
 }  // namespace
@@ -189,9 +211,11 @@ EdgeTopology find_edge_topology(const std::vector<SurfacePatch>& patches, const 
     if (used[j]) continue;
     for (std::size_t i = 0; i < edges.size(); ++i) {
       if (i == j || (used[i] && !partly_used[i])) continue;
-      const std::optional<Glue> g = match_part(edges[i], edges[j], compiled, eps, ev);
-      if (!g) continue;
-      topology.glues.push_back(*g);
+      const EdgeRef& ea = edges[i].edge;
+      const bool wraps = (ea.side == 0 || ea.side == 2) ? patches[ea.patch].periodic_u : patches[ea.patch].periodic_v;
+      const std::vector<Glue> g = match_part(edges[i], wraps, edges[j], compiled, eps, ev);
+      if (g.empty()) continue;
+      topology.glues.insert(topology.glues.end(), g.begin(), g.end());
       used[j] = true;
       used[i] = partly_used[i] = true;
       break;

@@ -1,8 +1,9 @@
 // Which patch edges are one curve of the surface (a seam) or one point (a pole).
 //
 // Edge `side` of a patch: 0 is v = v.lo (running along u), 1 is u = u.hi (along v), 2 is
-// v = v.hi (along u), 3 is u = u.lo (along v). A glue identifies the whole edge b with the
-// part [a_lo, a_hi] of edge a, linearly in grid indices (reversed: b's start at a_hi).
+// v = v.hi (along u), 3 is u = u.lo (along v). A glue identifies the part [b_lo, b_hi] of
+// edge b with the part [a_lo, a_hi] of edge a, linearly in grid indices (reversed: b_lo
+// goes to a_hi).
 // Periodic axes are glued by declaration; other edges by geometry (with options.glue_edges):
 //  - an edge collapses to a point when its samples at 33 evenly spaced parameters agree;
 //  - two whole edges are glued when their samples agree, directly or reversed;
@@ -30,8 +31,9 @@ struct Glue {
   EdgeRef a, b;
   bool reversed = false;
   std::int64_t a_lo = 0, a_hi = kGridSize;
+  std::int64_t b_lo = 0, b_hi = kGridSize;
 
-  // Grid index on a of index t on b, and back (t on a within [a_lo, a_hi]).
+  // Grid index on a of index t on b (within [b_lo, b_hi]), and back (t within [a_lo, a_hi]).
   std::int64_t to_a(std::int64_t t) const;
   std::int64_t to_b(std::int64_t t) const;
 };

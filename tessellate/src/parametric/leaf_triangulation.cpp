@@ -65,7 +65,8 @@ LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leave
     std::vector<std::int64_t>& a = lines[g.a.patch].edge_line(g.a.side);
     std::vector<std::int64_t>& b = lines[g.b.patch].edge_line(g.b.side);
     std::vector<std::int64_t> to_a, to_b;
-    for (std::int64_t t : b) to_a.push_back(g.to_a(t));
+    for (auto it = std::lower_bound(b.begin(), b.end(), g.b_lo); it != b.end() && *it <= g.b_hi; ++it)
+      to_a.push_back(g.to_a(*it));
     for (auto it = std::lower_bound(a.begin(), a.end(), g.a_lo); it != a.end() && *it <= g.a_hi; ++it)
       to_b.push_back(g.to_b(*it));
     add_sorted(a, to_a);
@@ -120,7 +121,9 @@ LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leave
     if (i < out.points.size() && out.points[i] == p && j < out.points.size() && out.points[j] == q) sets.unite(i, j);
   };
   for (const Glue& g : topology.glues) {
-    for (std::int64_t t : lines[g.b.patch].edge_line(g.b.side)) unite_points(edge_point(g.b, t), edge_point(g.a, g.to_a(t)));
+    const std::vector<std::int64_t>& b = lines[g.b.patch].edge_line(g.b.side);
+    for (auto it = std::lower_bound(b.begin(), b.end(), g.b_lo); it != b.end() && *it <= g.b_hi; ++it)
+      unite_points(edge_point(g.b, *it), edge_point(g.a, g.to_a(*it)));
     const std::vector<std::int64_t>& a = lines[g.a.patch].edge_line(g.a.side);
     for (auto it = std::lower_bound(a.begin(), a.end(), g.a_lo); it != a.end() && *it <= g.a_hi; ++it)
       unite_points(edge_point(g.a, *it), edge_point(g.b, g.to_b(*it)));
