@@ -6,7 +6,7 @@ include(CMakePackageConfigHelpers)
 
 set(GENMOD_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/genmod)
 
-install(TARGETS genmod_kernel genmod_operators genmod_solvers genmod_tessellate genmod_models genmod
+install(TARGETS genmod_kernel genmod_operators genmod_solvers genmod_tessellate genmod_procedural genmod_models genmod
   EXPORT genmodTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -18,7 +18,7 @@ endif()
 
 # Plain `include`, not CMAKE_INSTALL_INCLUDEDIR: the targets' usage requirements say
 # $<INSTALL_INTERFACE:include>, and the two must agree.
-foreach(dir kernel/include operators/include solvers/include tessellate/include models/include include)
+foreach(dir kernel/include operators/include solvers/include tessellate/include procedural/include models/include include)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${dir}/ DESTINATION include FILES_MATCHING PATTERN "*.hpp")
 endforeach()
 

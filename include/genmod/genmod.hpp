@@ -6,5 +6,6 @@
 #include "genmod/operators/operators.hpp"
 #include "genmod/solvers/solvers.hpp"
 #include "genmod/tessellate/tessellate.hpp"
+#include "genmod/procedural/procedural.hpp"
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
