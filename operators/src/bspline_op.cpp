@@ -59,6 +59,7 @@ BSplineOp::BSplineOp(int dim, int degree, std::vector<double> knots, std::vector
     for (std::size_t c = 0; c < d; ++c) hpoints_[i * hd + c] = w * points_[i * d + c];
     if (rational()) hpoints_[i * hd + d] = w;
   }
+  check_magnitudes();
 
   // Rounding allowance per span: de Boor and the blossoms are convex combinations, each
   // level off by a few ulps of the largest control point; a rational curve divides by a
@@ -91,6 +92,42 @@ BSplineOp::BSplineOp(int dim, int degree, std::vector<double> knots, std::vector
     int m = 1;
     while (k + m < n_ && knots_[static_cast<std::size_t>(k + m)] == knots_[static_cast<std::size_t>(k)]) ++m;
     if (m > degree_) continuous_ = false;
+  }
+}
+
+void BSplineOp::check_magnitudes() const {
+  // de Boor's convex combinations, the rounding pads, the homogeneous coordinates of a NURBS
+  // and the differences that make the derivative curves must all stay finite; past double's
+  // range they would give wrong values and enclosures with no error flag. So a curve is
+  // refused when it is built unless its knot range, its (homogeneous) control points and the
+  // control points of every derivative curve are at most kMaxMagnitude; then the derivatives,
+  // built on demand with the same arithmetic, never fail.
+  if (!(knots_.back() - knots_.front() <= kMaxMagnitude))
+    bad(kind_, "the knot range [" + std::to_string(knots_.front()) + ", " + std::to_string(knots_.back()) +
+                   "] is wider than " + std::to_string(kMaxMagnitude) + " (its differences would overflow)");
+  const std::size_t hd = static_cast<std::size_t>(hdim());
+  std::vector<double> q = hpoints_;
+  auto check = [&](int order) {
+    for (std::size_t i = 0; i < q.size(); ++i)
+      if (!(std::abs(q[i]) <= kMaxMagnitude))
+        bad(kind_, (order == 0 ? std::string(rational() ? "weighted control point " : "control point ")
+                               : "control point of the order-" + std::to_string(order) + " derivative ") +
+                       std::to_string(i / hd) + " exceeds " + std::to_string(kMaxMagnitude) +
+                       " in magnitude (values past double's range cannot be bounded)");
+  };
+  check(0);
+  // Level r differentiates a degree-r curve over knots_[r0, r0 + n_r + r] (the end knots are
+  // dropped at each level), as derivative_op() does.
+  std::size_t n = static_cast<std::size_t>(n_), first = 0;
+  for (int r = degree_, order = 1; r >= 1; --r, ++order, --n, ++first) {
+    std::vector<double> next((n - 1) * hd, 0.0);
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      const double den = knots_[first + i + static_cast<std::size_t>(r) + 1] - knots_[first + i + 1];
+      if (den > 0.0)
+        for (std::size_t c = 0; c < hd; ++c) next[i * hd + c] = r * (q[(i + 1) * hd + c] - q[i * hd + c]) / den;
+    }
+    q = std::move(next);
+    check(order);
   }
 }
 

@@ -24,6 +24,9 @@ class BSplineOp final : public CustomOp, public std::enable_shared_from_this<BSp
  public:
   static constexpr int kMaxDegree = 12;
   static constexpr int kMaxDim = 16;
+  // The largest knot range and control coordinate (and derivative control coordinate) a
+  // curve may have: 2^1000, about 1.07e301, leaving room for sums and rounding pads.
+  static constexpr double kMaxMagnitude = 0x1p1000;
 
   // `points` holds n * dim coordinates (point-major); `weights` is empty (polynomial) or n
   // positive weights; `knots` has n + degree + 1 nondecreasing values. Throws
@@ -62,6 +65,8 @@ class BSplineOp final : public CustomOp, public std::enable_shared_from_this<BSp
   void enclose_piece(int k, double s, double t, double* lo, double* hi) const;
   std::shared_ptr<const BSplineOp> derivative_op() const;    // polynomial curves, degree >= 1
   std::shared_ptr<const BSplineOp> homogeneous_op() const;   // rational curves
+  // Throws std::invalid_argument past kMaxMagnitude (see the definition).
+  void check_magnitudes() const;
 
   int dim_, degree_, n_;
   std::vector<double> knots_, points_, weights_, hpoints_;

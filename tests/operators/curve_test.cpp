@@ -197,6 +197,57 @@ TEST(Curve, BadInputIsReported) {
   EXPECT_THROW(Curve::uniform_bspline({{0}, {1}}, 0), std::invalid_argument);
 }
 
+// Curves past double's range used to give wrong values and enclosures that missed them, with
+// no error flag; now they are refused when built, naming the problem.
+TEST(Curve, CurvesPastDoublesRangeAreRefusedWhenBuilt) {
+  auto refused = [](auto build, const char* word) {
+    try {
+      build();
+      ADD_FAILURE() << "accepted a curve that overflows (" << word << ")";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(word), std::string::npos) << e.what();
+    }
+  };
+  refused([] { Curve::bspline({{0}, {1}}, 1, {-1e308, -1e308, 1e308, 1e308}); }, "knot range");
+  refused([] { Curve::nurbs({{1e300}, {0}, {1}}, {1e10, 1, 1}, 2); }, "weighted control point");
+  refused([] { Curve::polyline({{-1.7e308}, {1.7e308}}); }, "exceeds");
+  // Close knots make the derivative's control points overflow: refused at build time, so
+  // derivative() never throws later.
+  refused([] { Curve::bspline({{0}, {1e200}, {0}}, 2, {0, 0, 0, 1e-200, 1e-200, 1e-200}); }, "derivative");
+  refused([] { Curve::catmull_rom({{0}, {1e308}, {0}}); }, "control point");
+}
+
+TEST(Curve, LargeCurvesInsideTheRangeStaySound) {
+  // Coordinates near the limit, weights spread over many orders of magnitude: point values
+  // lie in the enclosures and every derivative builds and evaluates finitely.
+  const std::vector<Curve> curves = {
+      Curve::polyline({{-1e300}, {1e300}, {-1e300}}),
+      Curve::nurbs({{1e100, -1e100}, {-1e100, 1e100}, {1e100, 1e100}}, {1e-8, 1e8, 1}, 2),
+      Curve::bspline({{0}, {1e250}, {0}, {1}}, 3, {-1e250, -1e250, -1e250, -1e250, 1e250, 1e250, 1e250, 1e250}),
+  };
+  for (const Curve& c : curves) {
+    Fn f = c(x(0));
+    for (int order = 0; order <= c.degree(); ++order) {
+      InclusionFunction inc(f);
+      PointEvaluator pe;
+      Tape tape(f);
+      const auto [lo, hi] = c.domain();
+      for (int i = 0; i <= 16; ++i) {
+        const double a = lo + (hi - lo) * (i / 16.0), b = lo + (hi - lo) * (std::min(i + 1, 16) / 16.0);
+        const std::vector<Interval> box = inc.eval(std::vector<Interval>{Interval(a, b)});
+        for (double t : {a, 0.5 * a + 0.5 * b, b}) {
+          const auto v = pe.eval(tape, {t});
+          for (std::size_t j = 0; j < v.size(); ++j) {
+            ASSERT_TRUE(std::isfinite(v[j])) << "order " << order << " t " << t;
+            EXPECT_TRUE(box[j].contains(v[j])) << "order " << order << " t " << t << " value " << v[j];
+          }
+        }
+      }
+      f = derivative(f, 0);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace genmod
 

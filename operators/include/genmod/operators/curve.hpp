@@ -16,7 +16,10 @@
 // nurbs() with explicit knots uses [0, 1]. Outside the domain the curve is an error (NaN),
 // never an extrapolation or a clamp. Bad input (too few points, a knot vector that is not
 // nondecreasing, points of different dimensions, weights <= 0) throws std::invalid_argument
-// naming the problem.
+// naming the problem. So does a curve past double's safe range: a knot range, a control
+// coordinate (times its weight, for NURBS) or a control coordinate of any derivative curve
+// larger than 2^1000 (about 1.07e301) in magnitude, where values and enclosures could
+// overflow; every curve that is built has derivatives that can be built too.
 //
 //   Curve c = Curve::catmull_rom({{0, 0}, {1, 1}, {2, 0}});
 //   Fn path = c(x(0));                 // a 2D curve in x(0)
