@@ -50,36 +50,18 @@ VmFormatError::VmFormatError(const std::string& source, int line, const std::str
 
 namespace {
 
-// The next line of `in` (without its newline) into `text`; false at the end of the input.
-// Counts the bytes read into `total` and throws VmFormatError past the limits or on a read
-// error of the stream.
-bool read_line(std::istream& in, std::string& text, std::size_t& total, const VmReadLimits& limits,
-               const std::string& source, int line_no) {
-  text.clear();
-  for (char c; in.get(c);) {
-    if (++total > limits.max_bytes)
-      throw VmFormatError(source, line_no, "the file is larger than the limit of " + std::to_string(limits.max_bytes) +
-                                               " bytes");
-    if (c == '\n') return true;
-    if (text.size() == limits.max_line)
-      throw VmFormatError(source, line_no, "a line is longer than the limit of " + std::to_string(limits.max_line) +
-                                               " bytes");
-    text.push_back(c);
-  }
-  if (in.bad()) throw VmFormatError(source, line_no, "read error");
-  return !text.empty();
-}
-
-}  // namespace
-
-Fn read_vm(std::istream& in, const std::string& source_name, const VmReadLimits& limits) {
+Fn read_lines(LineReader& reader, const std::string& source_name) {
   std::unordered_map<std::string, NodeId> names;
   NodeId last = kNoNode;
   std::string text;
   int line_no = 0;
-  std::size_t total = 0;
-  while (read_line(in, text, total, limits, source_name, line_no + 1)) {
-    ++line_no;
+  for (;;) {
+    try {
+      if (!reader.next(text)) break;
+    } catch (const TextReadError& e) {
+      throw VmFormatError(source_name, e.line(), e.what());
+    }
+    line_no = reader.line_number();
     if (const auto hash = text.find('#'); hash != std::string::npos) text.resize(hash);
     std::istringstream words(text);
     std::vector<std::string> w;
@@ -136,30 +118,20 @@ Fn read_vm(std::istream& in, const std::string& source_name, const VmReadLimits&
   return Fn::of(last);
 }
 
+}  // namespace
+
+Fn read_vm(std::istream& in, const std::string& source_name, const VmReadLimits& limits) {
+  LineReader reader(in, limits);
+  return read_lines(reader, source_name);
+}
+
 Fn load_vm(const std::string& path, const VmReadLimits& limits) {
-  // Read with stdio, which tells a read error (a directory, a failing disk) from the end of
-  // the file; a file stream would report both as the end.
+  // stdio tells a read error (a directory, a failing disk) from the end of the file; a file
+  // stream would report both as the end.
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!file) throw std::runtime_error("genmod: cannot open '" + path + "': " + std::strerror(errno));
-  std::string text;
-  std::array<char, 1 << 16> chunk{};
-  std::size_t line_start = 0;  // where the last (unfinished) line begins
-  for (;;) {
-    const std::size_t n = std::fread(chunk.data(), 1, chunk.size(), file.get());
-    if (text.size() + n > limits.max_bytes)
-      throw VmFormatError(path, 0, "the file is larger than the limit of " + std::to_string(limits.max_bytes) + " bytes");
-    text.append(chunk.data(), n);
-    if (std::ferror(file.get())) throw VmFormatError(path, 0, std::string("read error: ") + std::strerror(errno));
-    // read_vm checks the lines too, but a file without newlines (/dev/zero) must not first
-    // grow to max_bytes.
-    if (const std::size_t newline = text.rfind('\n'); newline != std::string::npos && newline >= line_start)
-      line_start = newline + 1;
-    if (text.size() - line_start > limits.max_line)
-      throw VmFormatError(path, 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n')), "a line is longer than the limit of " + std::to_string(limits.max_line) + " bytes");
-    if (n < chunk.size()) break;
-  }
-  std::istringstream in(std::move(text));
-  return read_vm(in, path, limits);
+  LineReader reader(file.get(), limits);
+  return read_lines(reader, path);
 }
 
 void write_vm(std::ostream& out, const Fn& f) {

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <memory>
 #include <optional>
-#include <sstream>
 #include <vector>
 
 namespace genmod {
@@ -24,39 +26,35 @@ std::string text(const char* prefix, std::string_view word) {
   return s;
 }
 
+// Takes the file one line at a time (so a file is read as a stream, never held whole), then
+// builds the curve.
 class Parser {
  public:
-  Parser(std::string_view text, std::string source) : text_(text), source_(std::move(source)) {}
+  explicit Parser(std::string source) : source_(std::move(source)) {}
 
-  Curve parse() {
-    int line_no = 0;
-    std::size_t pos = 0;
-    bool seen_header = false;
-    while (pos < text_.size()) {
-      const std::size_t end = std::min(text_.find('\n', pos), text_.size());
-      std::string_view line = text_.substr(pos, end - pos);
-      pos = end + 1;
-      ++line_no;
-      last_line_ = line_no;
-      if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-      std::vector<std::string_view> words = split(line);
-      if (words.empty()) continue;
-      const std::string keyword(words[0]);
-      words.erase(words.begin());
-      if (!seen_header) {
-        if (keyword != "crv") fail(line_no, "expected the header `crv 1`, got `" + printable(keyword) + "`");
-        if (count(line_no, words, 1, "crv") && integer(line_no, words[0]) != 1)
-          fail(line_no, text("unsupported format version ", words[0]) + " (this reader knows 1)");
-        seen_header = true;
-        continue;
-      }
-      statement(line_no, keyword, words);
+  void line(int line_no, std::string_view line) {
+    last_line_ = line_no;
+    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    std::vector<std::string_view> words = split(line);
+    if (words.empty()) return;
+    const std::string keyword(words[0]);
+    words.erase(words.begin());
+    if (!seen_header_) {
+      if (keyword != "crv") fail(line_no, "expected the header `crv 1`, got `" + printable(keyword) + "`");
+      if (count(line_no, words, 1, "crv") && integer(line_no, words[0]) != 1)
+        fail(line_no, text("unsupported format version ", words[0]) + " (this reader knows 1)");
+      seen_header_ = true;
+      return;
     }
-    if (!seen_header) fail(last_line_, "empty curve file (expected the header `crv 1`)");
+    statement(line_no, keyword, words);
+  }
+
+  Curve finish() {
+    if (!seen_header_) fail(last_line_, "empty curve file (expected the header `crv 1`)");
     return build();
   }
 
- private:
+  private:
   [[noreturn]] void fail(int line, const std::string& what) const { throw CurveFileError(source_, line, what); }
 
   static std::vector<std::string_view> split(std::string_view line) {
@@ -180,8 +178,8 @@ class Parser {
     }
   }
 
-  std::string_view text_;
   std::string source_;
+  bool seen_header_ = false;
   int last_line_ = 0, type_line_ = 0, degree_line_ = 0, knots_line_ = 0;
   std::string type_;
   int dim_ = 0, degree_ = 0;
@@ -192,14 +190,46 @@ class Parser {
 
 }  // namespace
 
-Curve parse_curve(std::string_view text, const std::string& source) { return Parser(text, source).parse(); }
+Curve parse_curve(std::string_view text, const std::string& source) {
+  Parser parser(source);
+  int line_no = 0;
+  for (std::size_t pos = 0; pos < text.size();) {
+    const std::size_t end = std::min(text.find('\n', pos), text.size());
+    parser.line(++line_no, text.substr(pos, end - pos));
+    pos = end + 1;
+  }
+  return parser.finish();
+}
 
-Curve load_curve(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw CurveFileError(path, 0, "cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_curve(text.str(), path);
+namespace {
+
+Curve read_lines(LineReader& reader, const std::string& source) {
+  Parser parser(source);
+  std::string line;
+  for (;;) {
+    try {
+      if (!reader.next(line)) break;
+    } catch (const TextReadError& e) {
+      throw CurveFileError(source, e.line(), e.what());
+    }
+    parser.line(reader.line_number(), line);
+  }
+  return parser.finish();
+}
+
+}  // namespace
+
+Curve read_curve(std::istream& in, const std::string& source, const CurveReadLimits& limits) {
+  LineReader reader(in, limits);
+  return read_lines(reader, source);
+}
+
+Curve load_curve(const std::string& path, const CurveReadLimits& limits) {
+  // stdio tells a read error (a directory) from the end of the file; a file stream does not.
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!file) throw CurveFileError(path, 0, std::string("cannot open the file: ") + std::strerror(errno));
+  LineReader reader(file.get(), limits);
+  return read_lines(reader, path);
 }
 
 Fn crv(const std::string& path, const Fn& in) { return load_curve(path)(in); }

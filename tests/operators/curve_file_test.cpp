@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
 namespace genmod {
 namespace {
 
@@ -66,6 +68,35 @@ TEST(CurveFile, ErrorsNameTheLine) {
   EXPECT_EQ(error_line("crv 1\ntype hermite\ndimension 1\npoint 0\npoint 1\ntangent 0\n", "tangents"), 6);
   EXPECT_EQ(error_line("crv 1\ntype polyline\ndimension 1\ndegree 2\npoint 0\npoint 1\n", "degree is only"), 4);
   EXPECT_THROW(load_curve(kCurves + "no_such_file.crv"), CurveFileError);
+}
+
+// Curve files are read as streams within limits: /dev/zero and a directory end in an error
+// naming the problem, a stream gives the same curve as the text, and limits are parameters.
+TEST(CurveFile, ReadingStreamsWithinLimitsAndReportsReadErrors) {
+  auto load_error = [](const std::string& path, CurveReadLimits limits) {
+    try {
+      load_curve(path, limits);
+    } catch (const CurveFileError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no exception");
+  };
+  EXPECT_NE(load_error("/dev/zero", {}).find("a line is longer than the limit of 1048576 bytes"), std::string::npos);
+  EXPECT_NE(load_error(kCurves, {}).find("read error"), std::string::npos);  // a directory
+  EXPECT_NE(load_error(kCurves + "profile.crv", {.max_bytes = 20}).find("larger than the limit of 20"),
+            std::string::npos);
+  EXPECT_EQ(load_error(kCurves + "profile.crv", {}), "no exception");
+  const std::string text = "crv 1\ntype bezier\ndimension 2\npoint 0 0\npoint 1 2\npoint 3 1";  // no final newline
+  std::istringstream in(text);
+  const Curve streamed = read_curve(in, "s");
+  EXPECT_EQ(streamed.control_points(), parse_curve(text).control_points());
+  std::istringstream long_line("crv 1\n# " + std::string(100, 'x') + "\n");
+  try {
+    read_curve(long_line, "s", {.max_line = 50});
+    ADD_FAILURE() << "a line over the limit was accepted";
+  } catch (const CurveFileError& e) {
+    EXPECT_EQ(e.line(), 2);
+  }
 }
 
 }  // namespace

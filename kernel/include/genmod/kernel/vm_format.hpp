@@ -7,6 +7,7 @@
 #pragma once
 
 #include "genmod/kernel/fn.hpp"
+#include "genmod/kernel/line_reader.hpp"
 
 #include <cstddef>
 #include <iosfwd>
@@ -26,14 +27,12 @@ class VmFormatError : public std::runtime_error {
 };
 
 // How much a reader takes before it gives up with a VmFormatError (a model file is text of
-// at most a few megabytes; /dev/zero or a wrong path must not fill the memory).
-struct VmReadLimits {
-  std::size_t max_bytes = std::size_t{1} << 30;  // the whole file
-  std::size_t max_line = std::size_t{1} << 20;   // one line
-};
+// at most a few megabytes; /dev/zero or a wrong path must not fill the memory): at most
+// max_bytes in all (default 1 GiB), max_line per line (default 1 MiB).
+using VmReadLimits = TextReadLimits;
 
-// Reads a model; VmFormatError for malformed text, a limit passed, or a read error of the
-// stream (which is never taken for the end of the file).
+// Reads a model line by line (streaming); VmFormatError for malformed text, a limit passed,
+// or a read error of the stream or file (which is never taken for the end of the file).
 Fn read_vm(std::istream& in, const std::string& source_name = "<stream>", const VmReadLimits& limits = {});
 Fn load_vm(const std::string& path, const VmReadLimits& limits = {});
 // Writes a scalar function (std::invalid_argument for a vector). Custom operators cannot be

@@ -34,8 +34,10 @@
 // statement they concern, or the last line.
 #pragma once
 
+#include "genmod/kernel/line_reader.hpp"
 #include "genmod/operators/curve.hpp"
 
+#include <iosfwd>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -51,10 +53,18 @@ class CurveFileError : public std::invalid_argument {
   int line_;
 };
 
+// How much a reader takes before it gives up with a CurveFileError: at most max_bytes in all
+// (default 1 GiB), max_line per line (default 1 MiB).
+using CurveReadLimits = TextReadLimits;
+
 // Parses curve-file text; `source` names it in error messages.
 Curve parse_curve(std::string_view text, const std::string& source = "<string>");
-// Reads and parses a file (CurveFileError with line 0 if it cannot be read).
-Curve load_curve(const std::string& path);
+// Reads a stream line by line (it is never held whole); CurveFileError for malformed text, a
+// limit passed or a read error of the stream (never taken for the end of the input).
+Curve read_curve(std::istream& in, const std::string& source = "<stream>", const CurveReadLimits& limits = {});
+// Reads a file the same way (CurveFileError with line 0 if it cannot be opened; a directory or a
+// failing disk is a read error).
+Curve load_curve(const std::string& path, const CurveReadLimits& limits = {});
 // GENMOD's m_crv: the curve in `path` evaluated at the scalar function `in`.
 Fn crv(const std::string& path, const Fn& in);
 
