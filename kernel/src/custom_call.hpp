@@ -15,7 +15,7 @@ namespace genmod::detail {
 inline void run_call_point(const Tape& tape, std::uint32_t call, std::span<const double> args,
                            std::span<double> slots) {
   const CallSite& cs = tape.calls()[call];
-  dag::custom(cs.op_id).eval(args, slots.subspan(cs.first_slot, cs.num_outputs));
+  cs.op->eval(args, slots.subspan(cs.first_slot, cs.num_outputs));
 }
 
 inline void check_inputs(const Tape& tape, std::size_t given, const char* who) {

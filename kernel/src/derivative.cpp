@@ -14,16 +14,28 @@
 namespace genmod {
 namespace {
 
-using dag::make;
-
-NodeId c(double v) { return dag::constant(v); }
 bool zero(NodeId n) { return dag::is_const(n, 0.0); }
 
-// Products and sums that skip known zeros, so derivative DAGs stay small.
-NodeId mul(NodeId a, NodeId b) { return (zero(a) || zero(b)) ? c(0.0) : make(Op::Mul, a, b); }
-NodeId add(NodeId a, NodeId b) { return make(Op::Add, a, b); }
-NodeId sub(NodeId a, NodeId b) { return make(Op::Sub, a, b); }
-NodeId div(NodeId a, NodeId b) { return zero(a) ? c(0.0) : make(Op::Div, a, b); }
+// Makes nodes for a walk: every node made is owned by the walk's Refs and released when the
+// walk is done, after its results are wrapped in Fn values (see dag.hpp, Lifetime).
+class Builder {
+ protected:
+  NodeId c(double v) { return refs_.own(dag::constant(v)); }
+  NodeId make(Op op, NodeId a, NodeId b = kNoNode, NodeId third = kNoNode) {
+    return refs_.own(dag::make(op, a, b, third));
+  }
+  NodeId make_custom(std::uint32_t op_id, int output, std::span<const NodeId> args) {
+    return refs_.own(dag::make_custom(op_id, output, args));
+  }
+  // Products and sums that skip known zeros, so derivative DAGs stay small.
+  NodeId mul(NodeId a, NodeId b) { return (zero(a) || zero(b)) ? c(0.0) : make(Op::Mul, a, b); }
+  NodeId add(NodeId a, NodeId b) { return make(Op::Add, a, b); }
+  NodeId sub(NodeId a, NodeId b) { return make(Op::Sub, a, b); }
+  NodeId div(NodeId a, NodeId b) { return zero(a) ? c(0.0) : make(Op::Div, a, b); }
+
+ private:
+  dag::Refs refs_;
+};
 
 // Fills memo[id] = make(id, node) for every node below `root` (root included) that `wanted`
 // accepts, arguments before the nodes that use them: a post order over an explicit stack, so
@@ -49,7 +61,7 @@ void post_order(NodeId root, std::unordered_map<NodeId, NodeId>& memo, Wanted wa
   }
 }
 
-class Differentiator {
+class Differentiator : private Builder {
  public:
   explicit Differentiator(int var) : var_(var) {}
 
@@ -68,7 +80,7 @@ class Differentiator {
 
   // The derivative of a node made earlier (derive's post order); 0 if it does not depend on
   // the variable.
-  NodeId d(NodeId id) const {
+  NodeId d(NodeId id) {
     if (!depends(id)) return c(0.0);
     return memo_.at(id);
   }
@@ -172,7 +184,7 @@ class Differentiator {
 };
 
 // Rebuilds a DAG with some coordinates replaced (simplifying on the way).
-class Substituter {
+class Substituter : private Builder {
  public:
   explicit Substituter(std::unordered_map<int, NodeId> replace) : replace_(std::move(replace)) {
     for (const auto& [i, n] : replace_) mask_ |= std::uint64_t{1} << i;
@@ -197,12 +209,12 @@ class Substituter {
   bool touched(NodeId id) const { return (dag::node(id).inputs & mask_) != 0; }
   NodeId sub(NodeId id) const { return touched(id) ? memo_.at(id) : id; }
 
-  NodeId rebuild(const Node& n) const {
+  NodeId rebuild(const Node& n) {
     if (n.op == Op::Var) return replace_.at(n.index);
     if (n.op == Op::Custom) {
       std::vector<NodeId> args;
       for (NodeId a : dag::custom_args(n)) args.push_back(sub(a));
-      return dag::make_custom(n.custom, n.index, args);
+      return make_custom(n.custom, n.index, args);
     }
     NodeId args[3] = {kNoNode, kNoNode, kNoNode};
     for (int k = 0; k < arity(n.op); ++k) args[k] = sub(n.arg[k]);

@@ -31,10 +31,11 @@ std::vector<NodeId> map2(Op op, const Fn& a, const Fn& b, const char* what) {
 
 // A relation over vectors is the conjunction of the componentwise relations.
 Fn relation(Op op, const Fn& a, const Fn& b, const char* what) {
-  const std::vector<NodeId> parts = map2(op, a, b, what);
-  NodeId acc = parts[0];
-  for (std::size_t j = 1; j < parts.size(); ++j) acc = dag::make(op == Op::Ne ? Op::Or : Op::And, acc, parts[j]);
-  return Fn::of(acc);
+  const Fn parts = Fn::adopt(map2(op, a, b, what));
+  Fn acc = parts[0];
+  for (std::size_t j = 1; j < parts.dim(); ++j)
+    acc = Fn::adopt(dag::make(op == Op::Ne ? Op::Or : Op::And, acc.node(0), parts.node(j)));
+  return acc;
 }
 
 NodeId scalar(const Fn& f, const char* what) {
@@ -51,7 +52,39 @@ Fn::Fn(double value) : nodes_{dag::constant(value)} {}
 Fn::Fn(std::vector<NodeId> components) : nodes_(std::move(components)) {
   if (nodes_.empty()) throw std::invalid_argument("genmod: an Fn needs at least one component");
   for (NodeId n : nodes_)
-    if (n >= dag::size()) throw std::invalid_argument("genmod: Fn component " + std::to_string(n) + " is not a node");
+    if (!dag::is_live(n)) throw std::invalid_argument("genmod: Fn component " + std::to_string(n) + " is not a node");
+  for (NodeId n : nodes_) dag::retain(n);
+}
+
+Fn Fn::adopt(std::vector<NodeId> owned) {
+  if (owned.empty()) throw std::invalid_argument("genmod: an Fn needs at least one component");
+  return Fn(Adopt{}, std::move(owned));
+}
+
+Fn::Fn(const Fn& other) : nodes_(other.nodes_) {
+  for (NodeId n : nodes_) dag::retain(n);
+}
+Fn::Fn(Fn&& other) noexcept : nodes_(std::move(other.nodes_)) {}
+Fn& Fn::operator=(const Fn& other) {
+  if (this != &other) {
+    for (NodeId n : other.nodes_) dag::retain(n);  // before releasing: other may share them
+    release();
+    nodes_ = other.nodes_;
+  }
+  return *this;
+}
+Fn& Fn::operator=(Fn&& other) noexcept {
+  if (this != &other) {
+    release();
+    nodes_ = std::move(other.nodes_);
+    other.nodes_.clear();
+  }
+  return *this;
+}
+Fn::~Fn() { release(); }
+void Fn::release() noexcept {
+  for (NodeId n : nodes_) dag::release(n);
+  nodes_.clear();
 }
 
 std::uint64_t Fn::input_mask() const noexcept {
@@ -81,7 +114,7 @@ Fn Fn::operator[](std::size_t j) const {
   return Fn::of(nodes_[j]);
 }
 
-Fn x(int i) { return Fn::of(dag::var(i)); }
+Fn x(int i) { return Fn::adopt(dag::var(i)); }
 
 Fn cat(std::span<const Fn> parts) {
   std::vector<NodeId> out;
@@ -90,15 +123,15 @@ Fn cat(std::span<const Fn> parts) {
 }
 Fn cat(std::initializer_list<Fn> parts) { return cat(std::span<const Fn>(parts.begin(), parts.size())); }
 
-Fn operator+(const Fn& a, const Fn& b) { return Fn(map2(Op::Add, a, b, "+")); }
-Fn operator-(const Fn& a, const Fn& b) { return Fn(map2(Op::Sub, a, b, "-")); }
-Fn operator*(const Fn& a, const Fn& b) { return Fn(map2(Op::Mul, a, b, "*")); }
-Fn operator/(const Fn& a, const Fn& b) { return Fn(map2(Op::Div, a, b, "/")); }
-Fn operator-(const Fn& a) { return Fn(map1(Op::Neg, a)); }
-Fn pow(const Fn& a, const Fn& b) { return Fn(map2(Op::Pow, a, b, "pow")); }
-Fn atan2(const Fn& y, const Fn& x) { return Fn(map2(Op::Atan2, y, x, "atan2")); }
-Fn min(const Fn& a, const Fn& b) { return Fn(map2(Op::Min, a, b, "min")); }
-Fn max(const Fn& a, const Fn& b) { return Fn(map2(Op::Max, a, b, "max")); }
+Fn operator+(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Add, a, b, "+")); }
+Fn operator-(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Sub, a, b, "-")); }
+Fn operator*(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Mul, a, b, "*")); }
+Fn operator/(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Div, a, b, "/")); }
+Fn operator-(const Fn& a) { return Fn::adopt(map1(Op::Neg, a)); }
+Fn pow(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Pow, a, b, "pow")); }
+Fn atan2(const Fn& y, const Fn& x) { return Fn::adopt(map2(Op::Atan2, y, x, "atan2")); }
+Fn min(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Min, a, b, "min")); }
+Fn max(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Max, a, b, "max")); }
 
 Fn operator<(const Fn& a, const Fn& b) { return relation(Op::Lt, a, b, "<"); }
 Fn operator<=(const Fn& a, const Fn& b) { return relation(Op::Le, a, b, "<="); }
@@ -107,24 +140,24 @@ Fn operator>=(const Fn& a, const Fn& b) { return relation(Op::Ge, a, b, ">="); }
 Fn eq(const Fn& a, const Fn& b) { return relation(Op::Eq, a, b, "=="); }
 Fn ne(const Fn& a, const Fn& b) { return relation(Op::Ne, a, b, "!="); }
 
-Fn operator&&(const Fn& a, const Fn& b) { return Fn::of(dag::make(Op::And, scalar(a, "&&"), scalar(b, "&&"))); }
-Fn operator||(const Fn& a, const Fn& b) { return Fn::of(dag::make(Op::Or, scalar(a, "||"), scalar(b, "||"))); }
-Fn operator!(const Fn& a) { return Fn::of(dag::make(Op::Not, scalar(a, "!"))); }
+Fn operator&&(const Fn& a, const Fn& b) { return Fn::adopt(dag::make(Op::And, scalar(a, "&&"), scalar(b, "&&"))); }
+Fn operator||(const Fn& a, const Fn& b) { return Fn::adopt(dag::make(Op::Or, scalar(a, "||"), scalar(b, "||"))); }
+Fn operator!(const Fn& a) { return Fn::adopt(dag::make(Op::Not, scalar(a, "!"))); }
 
-Fn square(const Fn& a) { return Fn(map1(Op::Square, a)); }
-Fn sqrt(const Fn& a) { return Fn(map1(Op::Sqrt, a)); }
-Fn exp(const Fn& a) { return Fn(map1(Op::Exp, a)); }
-Fn log(const Fn& a) { return Fn(map1(Op::Log, a)); }
-Fn sin(const Fn& a) { return Fn(map1(Op::Sin, a)); }
-Fn cos(const Fn& a) { return Fn(map1(Op::Cos, a)); }
-Fn tan(const Fn& a) { return Fn(map1(Op::Tan, a)); }
-Fn asin(const Fn& a) { return Fn(map1(Op::Asin, a)); }
-Fn acos(const Fn& a) { return Fn(map1(Op::Acos, a)); }
-Fn atan(const Fn& a) { return Fn(map1(Op::Atan, a)); }
-Fn abs(const Fn& a) { return Fn(map1(Op::Abs, a)); }
-Fn floor(const Fn& a) { return Fn(map1(Op::Floor, a)); }
-Fn ceil(const Fn& a) { return Fn(map1(Op::Ceil, a)); }
-Fn is_error(const Fn& h) { return Fn::of(dag::make(Op::IsError, scalar(h, "is_error"))); }
+Fn square(const Fn& a) { return Fn::adopt(map1(Op::Square, a)); }
+Fn sqrt(const Fn& a) { return Fn::adopt(map1(Op::Sqrt, a)); }
+Fn exp(const Fn& a) { return Fn::adopt(map1(Op::Exp, a)); }
+Fn log(const Fn& a) { return Fn::adopt(map1(Op::Log, a)); }
+Fn sin(const Fn& a) { return Fn::adopt(map1(Op::Sin, a)); }
+Fn cos(const Fn& a) { return Fn::adopt(map1(Op::Cos, a)); }
+Fn tan(const Fn& a) { return Fn::adopt(map1(Op::Tan, a)); }
+Fn asin(const Fn& a) { return Fn::adopt(map1(Op::Asin, a)); }
+Fn acos(const Fn& a) { return Fn::adopt(map1(Op::Acos, a)); }
+Fn atan(const Fn& a) { return Fn::adopt(map1(Op::Atan, a)); }
+Fn abs(const Fn& a) { return Fn::adopt(map1(Op::Abs, a)); }
+Fn floor(const Fn& a) { return Fn::adopt(map1(Op::Floor, a)); }
+Fn ceil(const Fn& a) { return Fn::adopt(map1(Op::Ceil, a)); }
+Fn is_error(const Fn& h) { return Fn::adopt(dag::make(Op::IsError, scalar(h, "is_error"))); }
 
 Fn select(const Fn& cond, const Fn& then_fn, const Fn& else_fn) {
   const NodeId c = scalar(cond, "select condition");
@@ -136,16 +169,24 @@ Fn select(const Fn& cond, const Fn& then_fn, const Fn& else_fn) {
   for (std::size_t j = 0; j < m; ++j)
     out.push_back(dag::make(Op::Select, c, then_fn.node(then_fn.dim() == 1 ? 0 : j),
                             else_fn.node(else_fn.dim() == 1 ? 0 : j)));
-  return Fn(std::move(out));
+  return Fn::adopt(std::move(out));
 }
 
 Fn apply_custom(const std::shared_ptr<const CustomOp>& op, std::span<const Fn> args) {
-  const std::uint32_t id = dag::register_custom(op);
   std::vector<NodeId> arg_nodes;
   for (const Fn& a : args) arg_nodes.push_back(scalar(a, "a custom operator argument"));
+  // The registration's reference keeps the operator alive until its nodes hold it.
+  const std::uint32_t id = dag::register_custom(op);
   std::vector<NodeId> out;
-  for (int j = 0; j < op->num_outputs(); ++j) out.push_back(dag::make_custom(id, j, arg_nodes));
-  return Fn(std::move(out));
+  try {
+    for (int j = 0; j < op->num_outputs(); ++j) out.push_back(dag::make_custom(id, j, arg_nodes));
+  } catch (...) {
+    for (NodeId n : out) dag::release(n);
+    dag::release_custom(id);
+    throw;
+  }
+  dag::release_custom(id);
+  return Fn::adopt(std::move(out));
 }
 
 Fn apply_custom(const std::shared_ptr<const CustomOp>& op, std::initializer_list<Fn> args) {

@@ -32,7 +32,7 @@ Tape custom_partials_tape(const CustomOp& op) {
   }
   std::vector<Fn> columns;
   for (int k = 0; k < op.num_args(); ++k) columns.push_back(op.derivative(args, k));
-  if (columns.empty()) columns.push_back(Fn(std::vector<NodeId>(static_cast<std::size_t>(op.num_outputs()), dag::constant(0.0))));
+  if (columns.empty()) columns.push_back(cat(std::vector<Fn>(static_cast<std::size_t>(op.num_outputs()), Fn(0.0))));
   return Tape(cat(columns), inputs);  // component k * num_outputs + j = d out_j / d arg_k
 }
 
@@ -57,14 +57,21 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
     const double* cc = &regs_[ar >= 3 ? std::size_t{c.c} * stride : 0];
     if (c.op == Op::Call) {
       const CallSite& cs = tape.calls()[c.a];
-      const CustomOp& op = dag::custom(cs.op_id);
+      const CustomOp& op = *cs.op;
       std::vector<double> args(cs.num_args), outs(tape.num_call_slots());
       for (std::uint32_t k = 0; k < cs.num_args; ++k) args[k] = regs_[std::size_t{tape.call_arg_registers()[cs.first_arg + k]} * stride];
       detail::run_call_point(tape, c.a, args, outs);
-      auto it = custom_partials_.find(cs.op_id);
-      if (it == custom_partials_.end()) it = custom_partials_.emplace(cs.op_id, custom_partials_tape(op)).first;
+      // Keyed by address; the weak owner tells a live operator from a later one at the same
+      // address after the first was destroyed.
+      auto it = custom_partials_.find(&op);
+      if (it != custom_partials_.end() && it->second.op.expired()) {
+        custom_partials_.erase(it);
+        it = custom_partials_.end();
+      }
+      if (it == custom_partials_.end())
+        it = custom_partials_.emplace(&op, CustomPartials{tape.custom_ops()[cs.op_index], custom_partials_tape(op)}).first;
       PointEvaluator pe;
-      const std::span<const double> partials = cs.num_args ? pe.eval(it->second, args) : std::span<const double>{};
+      const std::span<const double> partials = cs.num_args ? pe.eval(it->second.tape, args) : std::span<const double>{};
       for (std::uint32_t j = 0; j < cs.num_outputs; ++j) {
         double* slot = &slots_[std::size_t{cs.first_slot + j} * stride];
         std::fill(slot, slot + stride, 0.0);

@@ -376,7 +376,7 @@ bool IntervalEvaluator::call(const Tape& tape, std::uint32_t call) {
   }
   std::fill_n(slot_err_.begin() + cs.first_slot, cs.num_outputs, arg_err);
   std::fesetround(FE_TONEAREST);
-  const CustomOp& op = dag::custom(cs.op_id);
+  const CustomOp& op = *cs.op;
   const bool continuous =
       op.inclusion_continuous(call_args_, std::span(slots_).subspan(cs.first_slot, cs.num_outputs),
                               std::span(slot_err_).subspan(cs.first_slot, cs.num_outputs));

@@ -18,6 +18,9 @@ struct Tape::Data {
   std::vector<int> inputs;
   std::vector<std::uint32_t> ssa_outputs, reg_outputs;
   std::vector<CallSite> calls;
+  // The operators the call sites point to, kept alive as long as the tape (and the tapes
+  // simplified from it) even when the Fn it was compiled from is gone.
+  std::shared_ptr<const std::vector<std::shared_ptr<const CustomOp>>> ops;
   std::vector<std::uint32_t> ssa_call_args, reg_call_args;
   std::uint32_t num_registers = 0;
   std::uint32_t num_slots = 0;
@@ -45,6 +48,7 @@ class Rebuilder {
     reg_of_.assign(n, kUnused);
     auto out = std::make_shared<Tape::Data>();
     out->constants = src_.constants;
+    out->ops = src_.ops;
     out->inputs = src_.inputs;
     out->num_slots = src_.num_slots;
     // Outputs are live to the end: they take their registers first.
@@ -277,12 +281,14 @@ class Compiler {
       call = it->second;
     } else {
       CallSite cs{};
-      cs.op_id = n.custom;
+      ops_.push_back(dag::custom_shared(n.custom));
+      cs.op = ops_.back().get();
+      cs.op_index = static_cast<std::uint32_t>(ops_.size() - 1);
       cs.first_arg = static_cast<std::uint32_t>(d_.ssa_call_args.size());
       cs.num_args = static_cast<std::uint32_t>(args.size());
       for (NodeId a : args) d_.ssa_call_args.push_back(value(a));
       cs.first_slot = d_.num_slots;
-      cs.num_outputs = static_cast<std::uint32_t>(dag::custom(n.custom).num_outputs());
+      cs.num_outputs = static_cast<std::uint32_t>(cs.op->num_outputs());
       d_.num_slots += cs.num_outputs;
       d_.calls.push_back(cs);
       call = push({Op::Call, {}, 0, static_cast<std::uint32_t>(d_.calls.size() - 1), 0, 0});
@@ -298,6 +304,9 @@ class Compiler {
   std::map<double, std::uint32_t> const_index_;
   std::vector<double> constants_;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> call_of_;
+
+ public:
+  std::vector<std::shared_ptr<const CustomOp>> ops_;
 };
 
 std::shared_ptr<Tape::Data> compile(const Fn& f, std::span<const int> inputs) {
@@ -310,7 +319,9 @@ std::shared_ptr<Tape::Data> compile(const Fn& f, std::span<const int> inputs) {
         throw std::invalid_argument("genmod: Tape: input coordinate " + std::to_string(inputs[k]) + " is listed twice");
   }
   d->inputs.assign(inputs.begin(), inputs.end());
-  Compiler(*d, inputs).compile(f);
+  Compiler compiler(*d, inputs);
+  compiler.compile(f);
+  d->ops = std::make_shared<const std::vector<std::shared_ptr<const CustomOp>>>(std::move(compiler.ops_));
   return Rebuilder(*d, {}).run(nullptr);
 }
 
@@ -328,6 +339,10 @@ std::span<const std::uint32_t> Tape::output_values() const noexcept { return dat
 std::span<const double> Tape::constants() const noexcept { return *data_->constants; }
 std::span<const int> Tape::inputs() const noexcept { return data_->inputs; }
 std::span<const CallSite> Tape::calls() const noexcept { return data_->calls; }
+std::span<const std::shared_ptr<const CustomOp>> Tape::custom_ops() const noexcept {
+  if (!data_->ops) return {};
+  return *data_->ops;
+}
 std::uint32_t Tape::num_call_slots() const noexcept { return data_->num_slots; }
 bool Tape::has_choices() const noexcept { return data_->has_choices; }
 
@@ -351,7 +366,7 @@ std::string Tape::disassemble() const {
     switch (c.op) {
       case Op::Const: os << ' ' << k[c.a]; break;
       case Op::Load: os << " input" << c.a; break;
-      case Op::Call: os << " #" << c.a << " (" << dag::custom(data_->calls[c.a].op_id).name() << ')'; break;
+      case Op::Call: os << " #" << c.a << " (" << data_->calls[c.a].op->name() << ')'; break;
       case Op::CallOut: os << " slot" << c.a; break;
       default: {
         const int ar = arity(c.op);

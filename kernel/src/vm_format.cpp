@@ -51,6 +51,7 @@ VmFormatError::VmFormatError(const std::string& source, int line, const std::str
 namespace {
 
 Fn read_lines(LineReader& reader, const std::string& source_name) {
+  dag::Refs refs;  // owns the nodes made here until the result holds what it needs
   std::unordered_map<std::string, NodeId> names;
   NodeId last = kNoNode;
   std::string text;
@@ -86,7 +87,7 @@ Fn read_lines(LineReader& reader, const std::string& source_name) {
       want(1);
       const std::optional<double> v = parse_double(w[2]);
       if (!v) fail(quoted(w[2]) + " is not a number (or is out of double's range)");
-      id = dag::constant(*v);
+      id = refs.own(dag::constant(*v));
     } else if (opword.rfind("var-", 0) == 0) {
       want(0);
       const std::string axis = opword.substr(4);
@@ -102,14 +103,14 @@ Fn read_lines(LineReader& reader, const std::string& source_name) {
                std::to_string(kMaxInputs) + ")");
         index = static_cast<int>(v);
       }
-      id = dag::var(index);
+      id = refs.own(dag::var(index));
     } else {
       bool found;
       const Op op = parse_op(opword, &found);
       if (!found) fail("unknown opcode " + quoted(opword));
       const int ar = arity(op);
       want(static_cast<std::size_t>(ar));
-      id = dag::make(op, operand(0), ar >= 2 ? operand(1) : kNoNode, ar >= 3 ? operand(2) : kNoNode);
+      id = refs.own(dag::make(op, operand(0), ar >= 2 ? operand(1) : kNoNode, ar >= 3 ? operand(2) : kNoNode));
     }
     names.emplace(w[0], id);
     last = id;

@@ -254,7 +254,7 @@ std::shared_ptr<const BSplineOp> BSplineOp::homogeneous_op() const {
 
 Fn BSplineOp::derivative(std::span<const Fn> args, int) const {
   if (!rational()) {
-    if (degree_ == 0) return Fn(std::vector<NodeId>(static_cast<std::size_t>(dim_), dag::constant(0.0)));
+    if (degree_ == 0) return cat(std::vector<Fn>(static_cast<std::size_t>(dim_), Fn(0.0)));
     return genmod::apply_custom(std::shared_ptr<const CustomOp>(derivative_op()), args);
   }
   // c = A / w with (A, w) a polynomial B-spline H: c' = (A' - w' c) / w.

@@ -132,7 +132,7 @@ class TableOp final : public CustomOp {
 
   Fn derivative(std::span<const Fn> args, int k) const override {
     const std::size_t ku = static_cast<std::size_t>(k);
-    if (constant_[ku]) return Fn(std::vector<NodeId>(static_cast<std::size_t>(width_), dag::constant(0.0)));
+    if (constant_[ku]) return cat(std::vector<Fn>(static_cast<std::size_t>(width_), Fn(0.0)));
     std::shared_ptr<const TableOp> d;
     {
       std::lock_guard<std::mutex> lock(mutex_);

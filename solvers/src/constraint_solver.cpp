@@ -58,11 +58,11 @@ struct Problem {
       }
     if (o.use_newton && eqs.size() == n) newton.emplace(Fn(eqs), unknowns, p.coords);
     if (o.rule == Subdivision::Smear) {
-      std::vector<NodeId> parts;
+      std::vector<Fn> parts;
       try {
         for (const ConstraintAtom& a : sys.atoms())
-          for (int u : unknowns) parts.push_back(derivative(a.h, u).node(0));
-        smear.emplace(Fn(parts), sys.inputs());
+          for (int u : unknowns) parts.push_back(derivative(a.h, u));
+        smear.emplace(cat(parts), sys.inputs());
       } catch (const std::exception&) {
         smear.reset();  // no derivative: split the widest side instead
       }

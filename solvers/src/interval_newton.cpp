@@ -18,10 +18,10 @@ std::vector<int> all_inputs(std::span<const int> unknowns, std::span<const int> 
 }
 
 Fn jacobian_fn(const Fn& f, std::span<const int> unknowns) {
-  std::vector<NodeId> parts;
+  std::vector<Fn> parts;
   for (std::size_t j = 0; j < f.dim(); ++j)
-    for (int u : unknowns) parts.push_back(derivative(f[j], u).node(0));
-  return Fn(std::move(parts));
+    for (int u : unknowns) parts.push_back(derivative(f[j], u));
+  return cat(parts);
 }
 
 bool all_bounded(std::span<const Interval> v) {

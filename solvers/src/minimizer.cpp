@@ -215,12 +215,11 @@ void Search::build_lagrangian(const Fn& objective, std::span<const int> unknowns
     return;
   }
   try {
-    std::vector<NodeId> parts;
-    for (const Fn& g : g_) parts.push_back(g.node(0));
-    for (int u : unknowns) parts.push_back(derivative(objective, u).node(0));
+    std::vector<Fn> parts(g_.begin(), g_.end());
+    for (int u : unknowns) parts.push_back(derivative(objective, u));
     for (const Fn& g : g_)
-      for (int u : unknowns) parts.push_back(derivative(g, u).node(0));
-    kkt_.emplace(Fn(parts), unknowns);
+      for (int u : unknowns) parts.push_back(derivative(g, u));
+    kkt_.emplace(cat(parts), unknowns);
     lagrangian_.emplace(l, inputs);
   } catch (const std::exception&) {  // no derivative: no Lagrangian bound
     g_.clear();

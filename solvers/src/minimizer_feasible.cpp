@@ -22,15 +22,15 @@ FeasiblePointCertifier::FeasiblePointCertifier(const Fn& constraint, std::span<c
   is_equality_.assign(sys_.num_atoms(), 0);
   for (std::size_t a : equalities_) is_equality_[a] = 1;
   system_ = Fn(g);
-  std::vector<NodeId> parts;
+  std::vector<Fn> parts;
   try {
     for (std::size_t i = 0; i < g.size(); ++i)
-      for (int u : unknowns_) parts.push_back(derivative(system_[i], u).node(0));
+      for (int u : unknowns_) parts.push_back(derivative(system_[i], u));
   } catch (const std::exception&) {
     equalities_.clear();  // no derivative: no Newton
     return;
   }
-  jacobian_.emplace(Fn(parts), unknowns_);
+  jacobian_.emplace(cat(parts), unknowns_);
 }
 
 IntervalNewton& FeasiblePointCertifier::newton_for(std::uint64_t chosen) {

@@ -15,38 +15,44 @@
 namespace genmod {
 namespace {
 
-// Rewrites eq(a, b) -> |a - b| <= eta in the and / or skeleton of the constraint.
-NodeId relax(NodeId id, double eta, std::unordered_map<NodeId, NodeId>& memo) {
+// Rewrites eq(a, b) -> |a - b| <= eta in the and / or skeleton of the constraint. The nodes
+// made are owned by `refs` (the caller wraps the result in an Fn before it goes).
+NodeId relax(NodeId id, double eta, std::unordered_map<NodeId, NodeId>& memo, dag::Refs& refs) {
   if (auto it = memo.find(id); it != memo.end()) return it->second;
   const Node& n = dag::node(id);
   NodeId out = id;
   if (n.op == Op::Eq) {
-    out = dag::make(Op::Le, dag::make(Op::Abs, dag::make(Op::Sub, n.arg[0], n.arg[1])), dag::constant(eta));
+    const NodeId diff = refs.own(dag::make(Op::Sub, n.arg[0], n.arg[1]));
+    out = refs.own(dag::make(Op::Le, refs.own(dag::make(Op::Abs, diff)), refs.own(dag::constant(eta))));
   } else if (n.op == Op::And || n.op == Op::Or) {
-    out = dag::make(n.op, relax(n.arg[0], eta, memo), relax(n.arg[1], eta, memo));
+    const NodeId a = relax(n.arg[0], eta, memo, refs), b = relax(n.arg[1], eta, memo, refs);
+    out = refs.own(dag::make(n.op, a, b));
   }
   memo.emplace(id, out);
   return out;
 }
 
-void collect_residuals(NodeId id, std::vector<NodeId>& out) {
+// Appends the residual nodes (owned by `refs`) of the and-skeleton of the constraint.
+void collect_residuals(NodeId id, std::vector<NodeId>& out, dag::Refs& refs) {
   const Node& n = dag::node(id);
-  const NodeId zero = dag::constant(0.0);
+  auto excess = [&](NodeId a, NodeId b) {  // max(a - b, 0)
+    return refs.own(dag::make(Op::Max, refs.own(dag::make(Op::Sub, a, b)), refs.own(dag::constant(0.0))));
+  };
   switch (n.op) {
     case Op::And:
-      collect_residuals(n.arg[0], out);
-      collect_residuals(n.arg[1], out);
+      collect_residuals(n.arg[0], out, refs);
+      collect_residuals(n.arg[1], out, refs);
       break;
     case Op::Eq:
-      out.push_back(dag::make(Op::Sub, n.arg[0], n.arg[1]));
+      out.push_back(refs.own(dag::make(Op::Sub, n.arg[0], n.arg[1])));
       break;
     case Op::Lt:
     case Op::Le:
-      out.push_back(dag::make(Op::Max, dag::make(Op::Sub, n.arg[0], n.arg[1]), zero));
+      out.push_back(excess(n.arg[0], n.arg[1]));
       break;
     case Op::Gt:
     case Op::Ge:
-      out.push_back(dag::make(Op::Max, dag::make(Op::Sub, n.arg[1], n.arg[0]), zero));
+      out.push_back(excess(n.arg[1], n.arg[0]));
       break;
     default:
       break;  // or, not, select, ...: no residual (local search then relies on descent only)
@@ -61,16 +67,18 @@ Fn relax_equalities(const Fn& constraint, double eta) {
                                 std::to_string(eta));
   if (eta == 0.0) return constraint;
   std::unordered_map<NodeId, NodeId> memo;
+  dag::Refs refs;
   std::vector<NodeId> nodes;
-  for (NodeId id : constraint.nodes()) nodes.push_back(relax(id, eta, memo));
+  for (NodeId id : constraint.nodes()) nodes.push_back(relax(id, eta, memo, refs));
   return Fn(std::move(nodes));
 }
 
 namespace minimizer_detail {
 
 std::optional<Fn> constraint_residuals(const Fn& constraint) {
+  dag::Refs refs;
   std::vector<NodeId> residuals;
-  for (NodeId id : constraint.nodes()) collect_residuals(id, residuals);
+  for (NodeId id : constraint.nodes()) collect_residuals(id, residuals, refs);
   if (residuals.empty()) return std::nullopt;
   return Fn(std::move(residuals));
 }

@@ -172,14 +172,12 @@ std::vector<NodeId> children(const Node& n) {
 
 // Rebuilds node n with its operands replaced by `mapped`; returns kNoNode when the DAG's
 // construction rules would not reproduce the same operation on the same operands in the
-// same order (then the tape would not compute the same bits).
-NodeId rebuild(const Node& n, const std::vector<NodeId>& mapped) {
-  if (n.op == Op::Custom) {
-    const NodeId r = dag::make_custom(n.custom, n.index, mapped);
-    return r;
-  }
-  const NodeId r = dag::make(n.op, mapped[0], mapped.size() > 1 ? mapped[1] : kNoNode,
-                             mapped.size() > 2 ? mapped[2] : kNoNode);
+// same order (then the tape would not compute the same bits). The nodes made are owned by
+// `refs`.
+NodeId rebuild(const Node& n, const std::vector<NodeId>& mapped, dag::Refs& refs) {
+  if (n.op == Op::Custom) return refs.own(dag::make_custom(n.custom, n.index, mapped));
+  const NodeId r = refs.own(dag::make(n.op, mapped[0], mapped.size() > 1 ? mapped[1] : kNoNode,
+                                      mapped.size() > 2 ? mapped[2] : kNoNode));
   const Node& rn = dag::node(r);
   if (rn.op != n.op) return kNoNode;
   bool same = true;
@@ -298,6 +296,7 @@ std::vector<double> evaluate_tables(const Fn& f, const Lattice& lattice, Lattice
     Table table{sub_lattice(lattice, mask), {}};
 
     // Rewrite the stage: lower-stage operands become placeholder coordinates.
+    dag::Refs refs;  // the rewritten nodes, until stage_fn holds them
     std::unordered_map<NodeId, NodeId> mapped;
     std::vector<NodeId> placeholders;  // original nodes, in placeholder order
     bool ok = true;
@@ -318,13 +317,13 @@ std::vector<double> evaluate_tables(const Fn& f, const Lattice& lattice, Lattice
             ok = false;
             break;
           }
-          it = mapped.emplace(c, dag::var(free_coords[placeholders.size()])).first;
+          it = mapped.emplace(c, refs.own(dag::var(free_coords[placeholders.size()]))).first;
           placeholders.push_back(c);
         }
         args.push_back(it->second);
       }
       if (!ok) break;
-      const NodeId r = rebuild(n, args);
+      const NodeId r = rebuild(n, args, refs);
       if (r == kNoNode) ok = false;
       else mapped[id] = r;
     }

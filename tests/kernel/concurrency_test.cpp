@@ -13,20 +13,23 @@ namespace {
 
 TEST(Concurrency, ThreadsBuildAndEvaluateTheSameShapes) {
   constexpr int kThreads = 4, kShapes = 150;
-  // Each thread builds the same sequence of random functions (same seed) and records the
-  // node ids and values; hash-consing must give every thread identical ids.
+  // Each thread builds the same sequence of random functions (same seed), keeps them, and
+  // records the node ids and values; hash-consing must give every thread identical ids (while
+  // the functions live: a reclaimed id may be reused).
   std::vector<std::vector<NodeId>> ids(kThreads);
   std::vector<std::vector<double>> values(kThreads);
   std::vector<std::vector<double>> lows(kThreads);
+  std::vector<std::vector<Fn>> kept(kThreads);  // alive until every thread is done
   std::vector<std::thread> threads;
   for (int t = 0; t < kThreads; ++t) {
-    threads.emplace_back([t, &ids, &values, &lows] {
+    threads.emplace_back([t, &ids, &values, &lows, &kept] {
       testing::RandomFunctions rnd(77);
       PointEvaluator pv;
       IntervalEvaluator iv;
       const std::vector<int> xyz = {0, 1, 2};
       for (int s = 0; s < kShapes; ++s) {
         const Fn f = rnd.function(6) + derivative(rnd.function(4), 1);
+        kept[t].push_back(f);
         ids[t].push_back(f.node(0));
         const Tape tape(f, xyz);
         values[t].push_back(pv.eval(tape, {0.25, -0.5, 1.5})[0]);

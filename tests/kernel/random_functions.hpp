@@ -28,7 +28,7 @@ inline std::vector<OpInfo> all_dag_ops() {
 
 inline Fn apply_op(Op op, const Fn& a, const Fn& b = Fn(), const Fn& c = Fn()) {
   const int n = arity(op);
-  return Fn::of(dag::make(op, a.node(0), n >= 2 ? b.node(0) : kNoNode, n >= 3 ? c.node(0) : kNoNode));
+  return Fn::adopt(dag::make(op, a.node(0), n >= 2 ? b.node(0) : kNoNode, n >= 3 ? c.node(0) : kNoNode));
 }
 
 class RandomFunctions {

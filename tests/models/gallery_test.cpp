@@ -2,6 +2,7 @@
 // profile-product invariants (research/snyder.md 7.1-7.4), overrides change the shape, and
 // bad names are reported.
 #include "genmod/models/gallery.hpp"
+#include "genmod/kernel/dag.hpp"
 
 #include "models/model_testing.hpp"
 
@@ -137,6 +138,20 @@ TEST(LampStand, IsAProfileProductOfAStarShapedClosedCross) {
   // Profile: base wider than the stem, top flare wider than the stem.
   EXPECT_GT(p.at("base_radius"), p.at("stem_radius"));
   EXPECT_NEAR(at(profile, 0.5)[0], p.at("stem_radius"), 1e-12);
+}
+
+// Each build applies new curve operators; they used to live forever, so about the 33,000th
+// build of the patio tile threw "too many custom operators" for the rest of the process. Now
+// what a dropped model held is reclaimed.
+TEST(Gallery, BuildingAModelSeventyThousandTimesLeavesNothingBehind) {
+  const std::size_t nodes = dag::size(), ops = dag::custom_count();
+  const Model& tile = find_model("patio_tile");
+  for (int i = 0; i < 70000; ++i) {
+    const Fn f = build_model(tile);
+    ASSERT_EQ(f.dim(), 3u);
+  }
+  EXPECT_EQ(dag::size(), nodes);
+  EXPECT_EQ(dag::custom_count(), ops);
 }
 
 TEST(Gallery, OverridesChangeTheShape) {

@@ -153,7 +153,9 @@ TEST(BloomenthalClaims, Claim23NearestPointOnSegment) {
     EXPECT_LE(std::sqrt(at(d2, px, py, pz)), std::sqrt(best) + 1e-9);
     EXPECT_GE(std::sqrt(at(d2, px, py, pz)), std::sqrt(best) - 1e-6);  // the sampling's resolution
     const double a = at(alpha, px, py, pz);  // unclamped
-    if (a > 0.001 && a < 0.999) EXPECT_NEAR(a, best_t, 1e-4);
+    if (a > 0.001 && a < 0.999) {
+      EXPECT_NEAR(a, best_t, 1e-4);
+    }
   }
 }
 

@@ -34,10 +34,21 @@ class Fn {
   // A bool never becomes a function: `Fn c = (f == g)` with a C++ comparison in it is a
   // mistake, caught at compile time.
   Fn(bool) = delete;
-  // A function with the given component nodes (at least one).
+  // A function with the given component nodes (at least one, each live), taking a reference
+  // of its own on each (the ids are borrowed; see dag.hpp, Lifetime).
   explicit Fn(std::vector<NodeId> components);
-  // The scalar function of one DAG node.
+  // The scalar function of one DAG node (borrowed, like the constructor).
   static Fn of(NodeId node) { return Fn(std::vector<NodeId>{node}); }
+  // A function that takes over the new references `owned` (what dag::make returns).
+  static Fn adopt(std::vector<NodeId> owned);
+  static Fn adopt(NodeId owned) { return adopt(std::vector<NodeId>{owned}); }
+
+  // An Fn holds one reference per component: copies add them, destruction gives them back.
+  Fn(const Fn& other);
+  Fn(Fn&& other) noexcept;
+  Fn& operator=(const Fn& other);
+  Fn& operator=(Fn&& other) noexcept;
+  ~Fn();
 
   std::size_t dim() const noexcept { return nodes_.size(); }
   NodeId node(std::size_t j) const { return nodes_.at(j); }
@@ -57,6 +68,10 @@ class Fn {
   friend bool identical(const Fn& a, const Fn& b) noexcept { return a.nodes_ == b.nodes_; }
 
  private:
+  struct Adopt {};
+  Fn(Adopt, std::vector<NodeId> owned) noexcept : nodes_(std::move(owned)) {}
+  void release() noexcept;
+
   std::vector<NodeId> nodes_;
 };
 

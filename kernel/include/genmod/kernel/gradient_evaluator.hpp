@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <span>
+#include <memory>
 #include <unordered_map>
 #include <vector>
 
@@ -26,7 +27,11 @@ class GradientEvaluator {
   std::vector<double> slots_;  // per call slot: value then partials
   std::vector<double> scratch_;  // one register's partials
   std::vector<double> values_, jacobian_;
-  std::unordered_map<std::uint32_t, Tape> custom_partials_;  // per custom operator
+  struct CustomPartials {
+    std::weak_ptr<const CustomOp> op;
+    Tape tape;
+  };
+  std::unordered_map<const CustomOp*, CustomPartials> custom_partials_;  // per custom operator
 };
 
 }  // namespace genmod

@@ -22,6 +22,8 @@
 
 namespace genmod {
 
+class CustomOp;
+
 struct Clause {
   Op op;
   std::uint8_t reserved[3] = {0, 0, 0};
@@ -41,7 +43,8 @@ enum Choice : std::uint8_t {
 
 // One application of a custom operator on the tape.
 struct CallSite {
-  std::uint32_t op_id;        // dag::custom(op_id)
+  const CustomOp* op;         // kept alive by the tape: custom_ops()[op_index]
+  std::uint32_t op_index;
   std::uint32_t first_arg;    // arguments: call_args()[first_arg, first_arg + num_args)
   std::uint32_t num_args;
   std::uint32_t first_slot;   // outputs go to slots [first_slot, first_slot + num_outputs)
@@ -71,6 +74,8 @@ class Tape {
   std::size_t num_outputs() const noexcept { return output_registers().size(); }
   std::size_t size() const noexcept { return clauses().size(); }
   std::span<const CallSite> calls() const noexcept;
+  // The custom operators the calls apply (shared owners: the tape keeps them alive).
+  std::span<const std::shared_ptr<const CustomOp>> custom_ops() const noexcept;
   std::uint32_t num_call_slots() const noexcept;
   // True if some clause can make a choice (min / max / select), i.e. pruning can help.
   bool has_choices() const noexcept;
