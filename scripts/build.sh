@@ -8,3 +8,10 @@ shift || true
 jobs="$(nproc)"
 cmake -S "$root" -B "$root/build/$name" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
 cmake --build "$root/build/$name" -j "$jobs"
+# `import genmod` for Debian's python3 without setting a path: a .pth file in its user site
+# directory names the package built here (the release build only; rewritten on each build).
+if [ "$name" = release ] && [ -d "$root/build/$name/python/genmod" ] && [ -x /usr/bin/python3 ]; then
+  site="$(/usr/bin/python3 -m site --user-site)"
+  mkdir -p "$site"
+  echo "$root/build/$name/python" > "$site/genmod.pth"
+fi

@@ -12,6 +12,6 @@ jobs="$(nproc)"
 ctest --test-dir "$root/build/release" -j "$jobs" --output-on-failure
 
 "$root/scripts/build.sh" sanitize -DGENMOD_SANITIZE=address,undefined -DGENMOD_BUILD_BENCH=OFF \
-  -DGENMOD_BUILD_APPS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+  -DGENMOD_BUILD_APPS=OFF -DGENMOD_BUILD_PYTHON=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir "$root/build/sanitize" -j "$jobs" --output-on-failure

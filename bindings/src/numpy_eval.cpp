@@ -1,0 +1,127 @@
+// numpy in and out: an Fn or a compiled Tape evaluated on an (N, n) array of points (column k is
+// the coordinate x(k)) to (N, m) with the batch evaluator (no per-point Python work, the GIL
+// released), and bounded over a box given as an (n, 2) array of [lo, hi] rows.
+#include "bindings.hpp"
+
+#include "genmod/kernel/batch_evaluator.hpp"
+#include "genmod/kernel/fn.hpp"
+#include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/kernel/tape.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <numeric>
+#include <string>
+
+namespace py = pybind11;
+
+namespace genmod::python {
+namespace {
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// A tape over the coordinates x(0) .. x(columns - 1), in that order.
+struct ColumnTape {
+  ColumnTape(const Fn& f, std::size_t columns) : tape(f, coordinates(f, columns)), columns(columns) {}
+
+  static std::vector<int> coordinates(const Fn& f, std::size_t columns) {
+    const std::vector<int> in = f.inputs();
+    if (!in.empty() && static_cast<std::size_t>(in.back()) >= columns)
+      throw std::invalid_argument("genmod: the function depends on x(" + std::to_string(in.back()) + ") but the points have " +
+                                  std::to_string(columns) + " column" + (columns == 1 ? "" : "s"));
+    std::vector<int> all(columns);
+    std::iota(all.begin(), all.end(), 0);
+    return all;
+  }
+
+  Tape tape;
+  std::size_t columns;
+};
+
+py::array evaluate(const ColumnTape& t, const Array& points) {
+  if (points.ndim() != 1 && points.ndim() != 2)
+    throw std::invalid_argument("genmod: points must be an array of shape (n,) or (N, n), got " +
+                                std::to_string(points.ndim()) + " dimensions");
+  const bool single = points.ndim() == 1;
+  const std::size_t count = single ? 1 : static_cast<std::size_t>(points.shape(0));
+  const std::size_t n = static_cast<std::size_t>(points.shape(single ? 0 : 1));
+  if (n != t.columns)
+    throw std::invalid_argument("genmod: the points have " + std::to_string(n) + " columns, the tape " +
+                                std::to_string(t.columns));
+  const std::size_t m = t.tape.num_outputs();
+  // Structure of arrays for the evaluator, then back to rows.
+  std::vector<double> in(n * count), out(m * count);
+  const double* p = points.data();
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t k = 0; k < n; ++k) in[k * count + i] = p[i * n + k];
+  {
+    py::gil_scoped_release unlocked;
+    std::vector<const double*> ins(n);
+    std::vector<double*> outs(m);
+    for (std::size_t k = 0; k < n; ++k) ins[k] = in.data() + k * count;
+    for (std::size_t j = 0; j < m; ++j) outs[j] = out.data() + j * count;
+    BatchEvaluator ev;
+    ev.eval(t.tape, ins, count, outs);
+  }
+  py::array_t<double> result = single ? py::array_t<double>({static_cast<py::ssize_t>(m)})
+                                      : py::array_t<double>({static_cast<py::ssize_t>(count), static_cast<py::ssize_t>(m)});
+  double* r = result.mutable_data();
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t j = 0; j < m; ++j) r[i * m + j] = out[j * count + i];
+  return result;
+}
+
+py::array bound(const ColumnTape& t, const Array& box) {
+  if (box.ndim() != 2 || box.shape(1) != 2)
+    throw std::invalid_argument("genmod: a box must be an array of shape (n, 2) of [lo, hi] rows");
+  const std::size_t n = static_cast<std::size_t>(box.shape(0));
+  if (n != t.columns)
+    throw std::invalid_argument("genmod: the box has " + std::to_string(n) + " rows, the tape " + std::to_string(t.columns));
+  std::vector<Interval> b;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double lo = box.at(k, 0), hi = box.at(k, 1);
+    if (!(lo <= hi))
+      throw std::invalid_argument("genmod: box row " + std::to_string(k) + " is not an interval lo <= hi");
+    b.emplace_back(lo, hi);
+  }
+  IntervalEvaluator ev;
+  const std::span<const Interval> y = ev.eval(t.tape, b);
+  py::array_t<double> result({static_cast<py::ssize_t>(y.size()), py::ssize_t{2}});
+  for (std::size_t j = 0; j < y.size(); ++j) {
+    result.mutable_at(j, 0) = y[j].lo();
+    result.mutable_at(j, 1) = y[j].hi();
+  }
+  return result;
+}
+
+}  // namespace
+
+void bind_evaluation(py::module_& m) {
+  py::class_<ColumnTape>(m, "Tape", R"doc(A function compiled once for evaluation over the coordinates x(0) .. x(n-1).
+
+tape(points) evaluates an (N, n) array (column k is x(k)) to an (N, m) array, or an (n,)
+point to (m,); tape.bound(box) encloses every value over an (n, 2) box to an (m, 2) array.)doc")
+      .def(py::init<const Fn&, std::size_t>(), py::arg("f"), py::arg("n"))
+      .def_property_readonly("n", [](const ColumnTape& t) { return t.columns; })
+      .def_property_readonly("m", [](const ColumnTape& t) { return t.tape.num_outputs(); })
+      .def_property_readonly("size", [](const ColumnTape& t) { return t.tape.size(); }, "The number of clauses.")
+      .def("__call__", &evaluate, py::arg("points"))
+      .def("bound", &bound, py::arg("box"));
+
+  auto fn = py::reinterpret_borrow<py::class_<Fn>>(m.attr("Fn"));
+  // The number of coordinates a points array (last axis) or a box (rows) gives.
+  auto columns_of = [](const Array& a, bool is_box) -> std::size_t {
+    if (is_box) return a.ndim() >= 1 ? static_cast<std::size_t>(a.shape(0)) : 0;
+    return static_cast<std::size_t>(a.ndim() == 1 ? a.shape(0) : a.ndim() == 2 ? a.shape(1) : 0);
+  };
+  fn.def("__call__", [columns_of](const Fn& f, const Array& points) {
+        return evaluate(ColumnTape(f, columns_of(points, false)), points);
+      }, py::arg("points"),
+      "Values at an (N, n) array of points (column k is x(k)) as (N, m); compiles a tape each call (use genmod.Tape for repeated calls).")
+      .def("bound", [columns_of](const Fn& f, const Array& box) {
+        return bound(ColumnTape(f, columns_of(box, true)), box);
+      }, py::arg("box"), "An enclosure of every value over an (n, 2) box, as (m, 2) [lo, hi] rows.");
+}
+
+}  // namespace genmod::python
