@@ -201,3 +201,38 @@ TEST(Stitch, EmptySelectionsAndBadInput) {
 
 }  // namespace
 }  // namespace genmod
+
+namespace genmod {
+namespace {
+
+// Loops of 12 and 8 vertices (a 3 x 3 face onto a 2 x 2 hole): 20 joining triangles, closed,
+// outward; the seam lies in the box's side planes, so the volume is the long box's.
+TEST(Stitch, UnequalLoops) {
+  const PolyMesh a = make_grid_box(Vec3(0, 0, 0), Vec3(1, 1, 1), 3, "a");
+  const PolyMesh b = make_grid_box(Vec3(2, 0, 0), Vec3(3, 1, 1), 2, "b");
+  const PolyMesh out = stitch(a, test::faces_with_centroid_in(a, Vec3(0, -1, -1), Vec3(0, 2, 2)), b,
+                              test::faces_with_centroid_in(b, Vec3(2, -1, -1), Vec3(2, 2, 2)), "seam");
+  EXPECT_EQ(faces_labelled(out, "seam").size(), 20u);
+  EXPECT_EQ(counts(out).faces, 9u + 20u + 20u);
+  EXPECT_EQ(counts(out).vertices, 16u + (6u * 4 + 2 - 1));  // a's face grid; b without its face centre
+  const MeshValidity v = validate(to_triangle_mesh(out));
+  EXPECT_TRUE(v.valid()) << describe(v);
+  EXPECT_EQ(v.euler_characteristic, 2);
+  EXPECT_NEAR(v.volume, 3.0, 1e-12);
+}
+
+// The same input gives bitwise the same output (index-order iteration, no pointers).
+TEST(Bridge, Deterministic) {
+  PolyMesh first = two_boxes(Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(2, 0.2, -0.1), Vec3(3.5, 1.3, 0.8), 3);
+  PolyMesh second = first;
+  const FaceList a = faces_with_centroid_in(first, Vec3(1, -1, -1), Vec3(1, 2, 2));
+  const FaceList b = faces_with_centroid_in(first, Vec3(2, -1, -1), Vec3(2, 2, 2));
+  bridge(first, a, b);
+  bridge(second, a, b);
+  EXPECT_EQ(mesh_difference(first, second), "");
+  const MeshValidity v = validate(to_triangle_mesh(first));
+  EXPECT_TRUE(v.valid()) << describe(v);
+}
+
+}  // namespace
+}  // namespace genmod
