@@ -45,12 +45,28 @@ MeshValidity check_bridge(PolyMesh& mesh, const FaceList& sel_a, const FaceList&
         if (!in.count(mesh.face_handle(mesh.opposite_halfedge_handle(h)).idx()))
           loop_vertices.insert(mesh.from_vertex_handle(h).idx());
   }
+  std::set<int> loop_a_vertices;
+  for (auto f : sel_a)
+    for (auto v : mesh.fv_range(f))
+      if (loop_vertices.count(v.idx())) loop_a_vertices.insert(v.idx());
+  auto distance = [&](int x, int y) { return (mesh.point(PolyMesh::VertexHandle(x)) - mesh.point(PolyMesh::VertexHandle(y))).sqrnorm(); };
+  double closest = INFINITY;  // the first rung of the zipper is a closest pair of the loops
+  for (int x : loop_a_vertices)
+    for (int y : loop_vertices)
+      if (!loop_a_vertices.count(y)) closest = std::min(closest, distance(x, y));
   const std::size_t old_faces = mesh.n_faces();
   std::vector<char> deleted_before(old_faces, 0);
   for (std::size_t i = 0; i < old_faces; ++i)
     deleted_before[i] = mesh.has_face_status() && mesh.status(PolyMesh::FaceHandle(static_cast<int>(i))).deleted();
   const FaceList tube = bridge(mesh, sel_a, sel_b, "tube");
   EXPECT_EQ(tube.size(), n + m);
+  if (!tube.empty()) {
+    double first_rung = INFINITY;
+    for (auto x : mesh.fv_range(tube.front()))
+      for (auto y : mesh.fv_range(tube.front()))
+        if (loop_a_vertices.count(x.idx()) && !loop_a_vertices.count(y.idx())) first_rung = std::min(first_rung, distance(x.idx(), y.idx()));
+    EXPECT_EQ(first_rung, closest);
+  }
   EXPECT_EQ(counts(mesh).faces, before.faces - removed.size() + n + m);
   for (std::size_t i = 0; i < old_faces; ++i)  // exactly the selected faces are gone
     EXPECT_EQ(mesh.status(PolyMesh::FaceHandle(static_cast<int>(i))).deleted(),
