@@ -252,3 +252,28 @@ TEST(Bridge, Deterministic) {
 
 }  // namespace
 }  // namespace genmod
+
+namespace genmod {
+namespace {
+
+// B's loop has a vertex on the line of an edge of A's loop, at the closest pair: the greedy
+// zipper (which looks one triangle ahead) ends on a flat closing triangle, so bridge refuses
+// and changes nothing. (A zipper planned over the whole strip could have avoided it.)
+TEST(Bridge, UnavoidableZeroAreaTriangleIsRefused) {
+  PolyMesh mesh = two_boxes(Vec3(0, 0, 0), Vec3(1, 1, 1), Vec3(1, 1.5, 0), Vec3(2, 2.5, 1), 1);
+  const PolyMesh before = mesh;
+  const FaceList a = faces_with_centroid_in(mesh, Vec3(1, -1, -1), Vec3(1, 1, 2));    // A's +x face
+  const FaceList b = faces_with_centroid_in(mesh, Vec3(0, 1.5, -1), Vec3(3, 1.5, 2));  // B's -y face
+  ASSERT_EQ(a.size(), 1u);
+  ASSERT_EQ(b.size(), 1u);
+  try {
+    bridge(mesh, a, b);
+    ADD_FAILURE() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("bridge: the loops would be joined by a zero-area triangle"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(mesh_difference(mesh, before), "");
+}
+
+}  // namespace
+}  // namespace genmod

@@ -31,7 +31,9 @@ namespace genmod {
 // An empty sel_a or sel_b changes nothing and returns no faces (there is nothing to join).
 // Throws std::invalid_argument naming bridge and the problem (the mesh unchanged) for: a face
 // not in the mesh, a selection that is not disk-like, selections that share a face or a
-// vertex, a rung that is already an edge of the mesh, an unavoidable zero-area triangle.
+// vertex, a rung that is already an edge of the mesh, a zero-area triangle the greedy zipper
+// could not avoid (it looks one triangle ahead; a configuration with a loop vertex on the line
+// of an edge of the other loop can end on a flat closing triangle).
 FaceList bridge(PolyMesh& mesh, const FaceList& sel_a, const FaceList& sel_b, const std::string& label = "");
 
 // stitch(a, sel_a, b, sel_b, label) -> a new mesh made of exactly the faces of `a` in sel_a
@@ -42,8 +44,8 @@ FaceList bridge(PolyMesh& mesh, const FaceList& sel_a, const FaceList& sel_b, co
 // that no kept face uses are dropped. The meshes are not moved: place `a` before stitching.
 // If sel_a or sel_b is empty nothing is joined: the result is just the kept faces (with both
 // empty, a copy of b's faces). Throws std::invalid_argument naming stitch for a face not in
-// its mesh or a non-empty selection that is not disk-like (as for bridge), or an unavoidable
-// zero-area triangle.
+// its mesh or a non-empty selection that is not disk-like (as for bridge), or a zero-area
+// triangle the zipper could not avoid.
 PolyMesh stitch(const PolyMesh& a, const FaceList& sel_a, const PolyMesh& b, const FaceList& sel_b,
                 const std::string& label = "");
 
