@@ -3,3 +3,7 @@
 #pragma once
 
 #include "genmod/procedural/poly_mesh.hpp"
+#include "genmod/procedural/grid_box.hpp"
+#include "genmod/procedural/bezier_curve.hpp"
+#include "genmod/procedural/curve_shaping.hpp"
+#include "genmod/procedural/stitching.hpp"
