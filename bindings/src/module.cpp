@@ -8,4 +8,6 @@ PYBIND11_MODULE(_genmod, m) {
   m.doc() = "genmod: generative modeling with interval arithmetic (the compiled core)";
   genmod::python::bind_fn(m);
   genmod::python::bind_evaluation(m);
+  genmod::python::bind_mesh(m);
+  genmod::python::bind_gallery(m);
 }

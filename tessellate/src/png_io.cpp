@@ -36,14 +36,36 @@ png_image gray_image_header(png_uint_32 width, png_uint_32 height) {
 
 }  // namespace
 
-void write_png(const std::string& path, const Image& image) {
+namespace {
+
+// std::invalid_argument for an image without pixels or with a buffer of the wrong size.
+void check_image(const Image& image, const std::string& what) {
   if (image.width <= 0 || image.height <= 0)
-    throw std::invalid_argument("genmod: write_png '" + path + "': the image is empty (" +
-                                std::to_string(image.width) + " x " + std::to_string(image.height) + ")");
+    throw std::invalid_argument("genmod: " + what + ": the image is empty (" + std::to_string(image.width) + " x " +
+                                std::to_string(image.height) + ")");
   if (image.pixels.size() != static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
-    throw std::invalid_argument("genmod: write_png '" + path + "': " + std::to_string(image.pixels.size()) +
-                                " pixels for a " + std::to_string(image.width) + " x " +
-                                std::to_string(image.height) + " image");
+    throw std::invalid_argument("genmod: " + what + ": " + std::to_string(image.pixels.size()) + " pixels for a " +
+                                std::to_string(image.width) + " x " + std::to_string(image.height) + " image");
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> encode_png(const Image& image) {
+  check_image(image, "encode_png");
+  png_image header = gray_image_header(static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height));
+  header.flags = PNG_IMAGE_FLAG_FAST;
+  png_alloc_size_t size = 0;  // first call: the size needed
+  if (png_image_write_to_memory(&header, nullptr, &size, 0, image.pixels.data(), 0, nullptr) == 0)
+    throw PngError(std::string("genmod: cannot encode PNG: ") + header.message);
+  std::vector<std::uint8_t> bytes(size);
+  if (png_image_write_to_memory(&header, bytes.data(), &size, 0, image.pixels.data(), 0, nullptr) == 0)
+    throw PngError(std::string("genmod: cannot encode PNG: ") + header.message);
+  bytes.resize(size);
+  return bytes;
+}
+
+void write_png(const std::string& path, const Image& image) {
+  check_image(image, "write_png '" + path + "'");
   File file = open_file(path, "wb", "create");
   png_image header = gray_image_header(static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height));
   // Binary sign images compress well even at zlib's fast setting.

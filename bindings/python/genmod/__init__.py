@@ -12,4 +12,5 @@ interval enclosure.
     gm.derivative(circle, 0)
 """
 from ._genmod import *  # noqa: F401,F403
-from ._genmod import Fn, Tape, x  # noqa: F401
+from ._genmod import Fn, Mesh, Tape, x  # noqa: F401
+from . import gallery  # noqa: F401

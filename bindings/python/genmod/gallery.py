@@ -1,0 +1,47 @@
+"""The model gallery: the parametric and implicit models of the three sources, with their
+parameters, as genmod functions and meshes.
+
+    from genmod import gallery
+    [m.name for m in gallery.models()]
+    f = gallery.build("doorknob")                  # an Fn of (u, v)
+    mesh, info = gallery.mesh("doorknob")          # adaptive; info["distance_bound"]
+"""
+from dataclasses import dataclass
+
+from . import _genmod
+
+
+@dataclass(frozen=True)
+class Parameter:
+    name: str
+    default: float
+    doc: str
+
+
+@dataclass(frozen=True)
+class Model:
+    name: str
+    kind: str  # "parametric" (a surface or solid of x(0), x(1), x(2)) or "implicit" (f < 0 inside)
+    description: str
+    parameters: tuple
+    open: bool  # its mesh has a boundary (a sheet, a fillet piece)
+
+
+def models():
+    """Every model, in the gallery's order."""
+    return [Model(name, kind, doc, tuple(Parameter(*p) for p in params), is_open)
+            for name, kind, doc, params, is_open in _genmod._gallery_models()]
+
+
+def build(name, **params):
+    """The model's function with the given parameters (the others keep their defaults).
+
+    ValueError names an unknown model (and lists the known ones) or a bad parameter."""
+    return _genmod._build_model(name, {k: float(v) for k, v in params.items()})
+
+
+def mesh(name, tolerance=0.0, max_seconds=120.0, threads=0, **params):
+    """Meshes the model: parametric models adaptively within `tolerance` (default 1e-3 of the
+    model's size), implicit ones with the octree mesher. Returns (Mesh, info)."""
+    return _genmod._mesh_model(name, {k: float(v) for k, v in params.items()}, float(tolerance),
+                               float(max_seconds), int(threads))

@@ -1,0 +1,79 @@
+// The model gallery from Python (genmod.gallery wraps these): the parametric and implicit
+// models with their parameters, built as Fn values and meshed adaptively.
+#include "bindings.hpp"
+
+#include "genmod/models/gallery.hpp"
+#include "genmod/models/implicit_gallery.hpp"
+
+#include <pybind11/stl.h>
+
+namespace py = pybind11;
+
+namespace genmod::python {
+namespace {
+
+py::list parameters(const std::vector<models::ModelParameter>& ps) {
+  py::list out;
+  for (const auto& p : ps) out.append(py::make_tuple(p.name, p.value, p.doc));
+  return out;
+}
+
+}  // namespace
+
+void bind_gallery(py::module_& m) {
+  m.def("_gallery_models", [] {
+    py::list out;
+    for (const models::Model& model : models::gallery())
+      out.append(py::make_tuple(model.name, "parametric", model.description, parameters(model.parameters), model.open));
+    for (const models::ImplicitModel& model : models::implicit_gallery())
+      out.append(py::make_tuple(model.name, "implicit", model.description, parameters(model.parameters), false));
+    return out;
+  });
+  m.def("_build_model", [](const std::string& name, const models::ParameterValues& params) {
+    if (const models::ImplicitModel* implicit = models::find_implicit_model(name))
+      return models::build_implicit_model(*implicit, params);
+    return models::build_model(models::find_model(name), params);
+  });
+  m.def("_mesh_model", [](const std::string& name, const models::ParameterValues& params, double tolerance,
+                          double max_seconds, int threads) {
+    py::dict info;
+    Mesh mesh;
+    if (const models::ImplicitModel* implicit = models::find_implicit_model(name)) {
+      const Fn f = models::build_implicit_model(*implicit, params);
+      ImplicitMeshSettings s;
+      s.min_feature = implicit->min_feature;
+      s.tolerance = tolerance;
+      s.max_seconds = max_seconds;
+      s.threads = threads;
+      ImplicitMesh r;
+      {
+        py::gil_scoped_release unlocked;
+        r = mesh_implicit(f, implicit->box, s);
+      }
+      info["distance_bound"] = r.stats.max_vertex_error;
+      info["limits_hit"] = r.stats.limits_hit;
+      mesh = std::move(r.mesh);
+    } else {
+      const models::Model& model = models::find_model(name);
+      const models::ParameterValues p = models::resolve_parameters(model, params);
+      const Fn surface = models::build_model(model, p);
+      AdaptiveMeshOptions o;
+      o.tolerance = tolerance > 0 ? tolerance : 1e-3 * models::model_extent(model, surface, p);
+      o.max_seconds = max_seconds;
+      o.threads = threads;
+      AdaptiveMesh r;
+      {
+        py::gil_scoped_release unlocked;
+        r = models::mesh_model_adaptive(model, surface, p, o);
+      }
+      info["distance_bound"] = r.distance_bound;
+      info["tolerance"] = o.tolerance;
+      info["limits_hit"] = r.limits_hit;
+      info["closed"] = r.closed();
+      mesh = std::move(r.mesh);
+    }
+    return py::make_tuple(mesh, info);
+  });
+}
+
+}  // namespace genmod::python

@@ -1,0 +1,152 @@
+// Meshes in Python: vertex (V, 3) and triangle (F, 3) numpy arrays, files, the validator's
+// report, previews (Mesh._repr_png_ shows a mesh in a notebook), and the implicit mesher.
+#include "bindings.hpp"
+
+#include "genmod/kernel/fn.hpp"
+#include "genmod/tessellate/implicit_mesher.hpp"
+#include "genmod/tessellate/mesh_io.hpp"
+#include "genmod/tessellate/png_io.hpp"
+#include "genmod/tessellate/preview.hpp"
+#include "genmod/tessellate/validate.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+namespace py = pybind11;
+
+namespace genmod::python {
+namespace {
+
+py::array_t<double> vertex_array(const Mesh& m) {
+  py::array_t<double> a({static_cast<py::ssize_t>(m.vertices.size()), py::ssize_t{3}});
+  double* p = a.mutable_data();
+  for (const auto& v : m.vertices) p = std::copy(v.begin(), v.end(), p);
+  return a;
+}
+
+py::array_t<std::uint32_t> triangle_array(const Mesh& m) {
+  py::array_t<std::uint32_t> a({static_cast<py::ssize_t>(m.triangles.size()), py::ssize_t{3}});
+  std::uint32_t* p = a.mutable_data();
+  for (const auto& t : m.triangles) p = std::copy(t.begin(), t.end(), p);
+  return a;
+}
+
+Mesh mesh_from_arrays(const py::array_t<double, py::array::c_style | py::array::forcecast>& v,
+                      const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& t) {
+  if (v.ndim() != 2 || v.shape(1) != 3) throw std::invalid_argument("genmod.Mesh: vertices must have shape (V, 3)");
+  if (t.ndim() != 2 || t.shape(1) != 3) throw std::invalid_argument("genmod.Mesh: triangles must have shape (F, 3)");
+  Mesh m;
+  for (py::ssize_t i = 0; i < v.shape(0); ++i) m.vertices.push_back({v.at(i, 0), v.at(i, 1), v.at(i, 2)});
+  for (py::ssize_t i = 0; i < t.shape(0); ++i) {
+    std::array<std::uint32_t, 3> tri{};
+    for (int k = 0; k < 3; ++k) {
+      const std::int64_t idx = t.at(i, k);
+      if (idx < 0 || idx >= v.shape(0))
+        throw std::invalid_argument("genmod.Mesh: triangle " + std::to_string(i) + " names vertex " + std::to_string(idx) +
+                                    " of " + std::to_string(v.shape(0)));
+      tri[static_cast<std::size_t>(k)] = static_cast<std::uint32_t>(idx);
+    }
+    m.triangles.push_back(tri);
+  }
+  return m;
+}
+
+py::dict report(const MeshValidity& v) {
+  py::dict d;
+  d["valid"] = v.valid();
+  d["closed"] = v.closed();
+  d["manifold"] = v.manifold();
+  d["oriented"] = v.oriented();
+  d["outward"] = v.outward;
+  d["self_intersections"] = v.self_intersections;
+  d["degenerate_triangles"] = v.degenerate_triangles;
+  d["boundary_edges"] = v.boundary_edges;
+  d["components"] = v.components;
+  d["euler_characteristic"] = v.euler_characteristic;
+  d["volume"] = v.volume;
+  d["vertices"] = v.vertices;
+  d["triangles"] = v.triangles;
+  d["description"] = describe(v);
+  return d;
+}
+
+py::bytes png_of(const Mesh& m, int size) {
+  PreviewOptions o;
+  o.width = o.height = size;
+  Image image;
+  {
+    py::gil_scoped_release unlocked;
+    image = preview(m, o);
+  }
+  const std::vector<std::uint8_t> bytes = encode_png(image);
+  return py::bytes(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+}
+
+Box3 box_from(const py::array_t<double, py::array::c_style | py::array::forcecast>& b) {
+  if (b.ndim() != 2 || b.shape(0) != 3 || b.shape(1) != 2)
+    throw std::invalid_argument("genmod: a 3-D box must be an array of shape (3, 2) of [lo, hi] rows");
+  Box3 box;
+  for (int k = 0; k < 3; ++k) {
+    if (!(b.at(k, 0) < b.at(k, 1))) throw std::invalid_argument("genmod: box row " + std::to_string(k) + " needs lo < hi");
+    box[static_cast<std::size_t>(k)] = Interval(b.at(k, 0), b.at(k, 1));
+  }
+  return box;
+}
+
+}  // namespace
+
+void bind_mesh(py::module_& m) {
+  py::class_<Mesh>(m, "Mesh", R"doc(A triangle mesh: vertices (V, 3) float64 and triangles (F, 3) uint32 arrays.
+
+mesh.write(path) writes OBJ, PLY, STL or OFF by the extension; mesh.validate() is the
+validator's report (closed, manifold, oriented outward, no self-intersections, ...);
+mesh.png() a shaded preview (a notebook shows a mesh through _repr_png_).)doc")
+      .def(py::init(&mesh_from_arrays), py::arg("vertices"), py::arg("triangles"))
+      .def_property_readonly("vertices", &vertex_array)
+      .def_property_readonly("triangles", &triangle_array)
+      .def("__len__", [](const Mesh& mesh) { return mesh.triangles.size(); })
+      .def("__repr__", [](const Mesh& mesh) {
+        return "<genmod.Mesh " + std::to_string(mesh.vertices.size()) + " vertices, " +
+               std::to_string(mesh.triangles.size()) + " triangles>";
+      })
+      .def("write", [](const Mesh& mesh, const std::filesystem::path& path) { write_mesh(mesh, path); }, py::arg("path"))
+      .def("validate", [](const Mesh& mesh) {
+        MeshValidity v;
+        {
+          py::gil_scoped_release unlocked;
+          v = validate(mesh);
+        }
+        return report(v);
+      })
+      .def("png", &png_of, py::arg("size") = 512, "A shaded preview as PNG bytes.")
+      .def("_repr_png_", [](const Mesh& mesh) { return png_of(mesh, 384); });
+  m.def("read_mesh", [](const std::filesystem::path& path) { return read_mesh(path); }, py::arg("path"));
+
+  m.def("mesh_implicit", [](const Fn& f, const py::array_t<double, py::array::c_style | py::array::forcecast>& box,
+                            double min_feature, double tolerance, double max_seconds, int threads) {
+        ImplicitMeshSettings s;
+        s.min_feature = min_feature;
+        s.tolerance = tolerance;
+        s.max_seconds = max_seconds;
+        s.threads = threads;
+        const Box3 b = box_from(box);
+        ImplicitMesh result;
+        {
+          py::gil_scoped_release unlocked;
+          result = mesh_implicit(f, b, s);
+        }
+        py::dict stats;
+        stats["max_vertex_error"] = result.stats.max_vertex_error;
+        stats["uncertified_vertices"] = result.stats.uncertified_vertices;
+        stats["limits_hit"] = result.stats.limits_hit;
+        stats["leaves"] = result.stats.leaves;
+        return py::make_tuple(result.mesh, stats);
+      }, py::arg("f"), py::arg("box"), py::arg("min_feature"), py::arg("tolerance") = 0.0,
+      py::arg("max_seconds") = 0.0, py::arg("threads") = 0,
+      R"doc(Meshes the solid {f < 0} inside box (shape (3, 2)): closed, manifold and intersection-free.
+
+Returns (mesh, stats); stats names the limits hit (the mesh is then coarser, still valid).)doc");
+}
+
+}  // namespace genmod::python
