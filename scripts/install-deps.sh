@@ -16,6 +16,7 @@ packages=(
   libcgal-dev             # mesh validation (tessellate layer)
   libopenmesh-dev         # mesh data structure and I/O
   pybind11-dev python3-dev python3-numpy python3-pytest
+  python3-distributed     # Dask distributed batch (Python side)
 )
 
 missing=()

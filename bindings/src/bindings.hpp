@@ -9,5 +9,6 @@ void bind_fn(pybind11::module_& m);          // Fn and the language (fn_bindings
 void bind_evaluation(pybind11::module_& m);  // numpy evaluation, bounds (numpy_eval.cpp)
 void bind_mesh(pybind11::module_& m);        // meshes, validation, previews, implicit meshing
 void bind_gallery(pybind11::module_& m);     // the model gallery (gallery_bindings.cpp)
+void bind_batch(pybind11::module_& m);       // the batch engine (batch_bindings.cpp)
 
 }  // namespace genmod::python

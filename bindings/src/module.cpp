@@ -10,4 +10,5 @@ PYBIND11_MODULE(_genmod, m) {
   genmod::python::bind_evaluation(m);
   genmod::python::bind_mesh(m);
   genmod::python::bind_gallery(m);
+  genmod::python::bind_batch(m);
 }

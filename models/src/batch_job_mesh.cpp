@@ -68,8 +68,9 @@ BatchMesh mesh_gallery_job(const Model& model, const Fn& surface, const JobDescr
   options.tolerance = job.tolerance.value_or(0.0) > 0.0 ? *job.tolerance : 1e-3 * model_extent(model, surface, params);
   options.max_seconds = job.max_seconds.value_or(0.0);
   AdaptiveMesh m = mesh_model_adaptive(model, surface, params, options);
+  const bool closed = m.closed();  // before the mesh moves out
   BatchMesh out{std::move(m.mesh), m.distance_bound, std::move(m.limits_hit), {}};
-  if (!m.closed()) out.note = std::to_string(m.boundary_edges) + " boundary edges (open surface)";
+  if (!closed) out.note = std::to_string(m.boundary_edges) + " boundary edges (open surface)";
   return out;
 }
 
