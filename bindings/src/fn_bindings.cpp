@@ -5,6 +5,7 @@
 
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/tape.hpp"
+#include "genmod/kernel/vm_format.hpp"
 
 #include <pybind11/operators.h>
 #include <pybind11/stl.h>
@@ -85,6 +86,8 @@ are NaN at points and flagged in bounds.)doc");
   py::implicitly_convertible<double, Fn>();
   py::implicitly_convertible<int, Fn>();
 
+  m.def("load_vm", [](const std::string& path) { return load_vm(path); }, py::arg("path"),
+        "Reads a .vm model file (x, y, z are x(0), x(1), x(2)); ValueError names the line of a malformed file.");
   m.def("live_nodes", &dag::size, "The number of live expression nodes (the store reclaims what nothing holds).");
   m.def("live_custom_operators", &dag::custom_count, "The number of live custom operators.");
   m.def("x", &x, py::arg("i"), "The parametric coordinate x(i), 0 <= i < 64.");

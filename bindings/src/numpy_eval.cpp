@@ -50,25 +50,33 @@ py::array evaluate(const ColumnTape& t, const Array& points) {
     throw std::invalid_argument("genmod: the points have " + std::to_string(n) + " columns, the tape " +
                                 std::to_string(t.columns));
   const std::size_t m = t.tape.num_outputs();
-  // Structure of arrays for the evaluator, then back to rows.
-  std::vector<double> in(n * count), out(m * count);
-  const double* p = points.data();
-  for (std::size_t i = 0; i < count; ++i)
-    for (std::size_t k = 0; k < n; ++k) in[k * count + i] = p[i * n + k];
-  {
-    py::gil_scoped_release unlocked;
-    std::vector<const double*> ins(n);
-    std::vector<double*> outs(m);
-    for (std::size_t k = 0; k < n; ++k) ins[k] = in.data() + k * count;
-    for (std::size_t j = 0; j < m; ++j) outs[j] = out.data() + j * count;
-    BatchEvaluator ev;
-    ev.eval(t.tape, ins, count, outs);
-  }
   py::array_t<double> result = single ? py::array_t<double>({static_cast<py::ssize_t>(m)})
                                       : py::array_t<double>({static_cast<py::ssize_t>(count), static_cast<py::ssize_t>(m)});
+  const double* p = points.data();
   double* r = result.mutable_data();
-  for (std::size_t i = 0; i < count; ++i)
-    for (std::size_t j = 0; j < m; ++j) r[i * m + j] = out[j * count + i];
+  {
+    // Blocks of points go through small structure-of-arrays buffers that stay in cache, so
+    // the rows are read once and the results written once (a whole-array transpose each way
+    // cost as much as the evaluation of a cheap function).
+    py::gil_scoped_release unlocked;
+    constexpr std::size_t kBlock = 4096;
+    std::vector<double> in(n * kBlock), out(m * kBlock);
+    std::vector<const double*> ins(n);
+    std::vector<double*> outs(m);
+    BatchEvaluator ev;
+    for (std::size_t start = 0; start < count; start += kBlock) {
+      const std::size_t b = std::min(kBlock, count - start);
+      for (std::size_t i = 0; i < b; ++i)
+        for (std::size_t k = 0; k < n; ++k) in[k * kBlock + i] = p[(start + i) * n + k];
+      for (std::size_t k = 0; k < n; ++k) ins[k] = in.data() + k * kBlock;
+      // One output: its row-major result is already a column, so write it in place.
+      for (std::size_t j = 0; j < m; ++j) outs[j] = m == 1 ? r + start : out.data() + j * kBlock;
+      ev.eval(t.tape, ins, b, outs);
+      if (m != 1)
+        for (std::size_t i = 0; i < b; ++i)
+          for (std::size_t j = 0; j < m; ++j) r[(start + i) * m + j] = out[j * kBlock + i];
+    }
+  }
   return result;
 }
 
