@@ -3,3 +3,7 @@
 #pragma once
 
 #include "genmod/procedural/poly_mesh.hpp"
+#include "genmod/procedural/selection.hpp"
+#include "genmod/procedural/extrusion.hpp"
+#include "genmod/procedural/sqrt2_subdivision.hpp"
+#include "genmod/procedural/grid_box.hpp"
