@@ -17,7 +17,7 @@ inline void check_faces(const PolyMesh& mesh, const FaceList& faces, const char*
     if (!f.is_valid() || f.idx() >= static_cast<int>(mesh.n_faces()))
       throw std::invalid_argument(std::string(tool) + ": face " + std::to_string(f.idx()) +
                                   " is not in the mesh");
-    if (mesh.status(f).deleted())
+    if (mesh.has_face_status() && mesh.status(f).deleted())
       throw std::invalid_argument(std::string(tool) + ": face " + std::to_string(f.idx()) +
                                   " is deleted");
     if (seen[f.idx()]++)
