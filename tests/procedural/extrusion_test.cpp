@@ -145,3 +145,33 @@ TEST(Extrusion, BadInputIsRefused) {
 
 }  // namespace
 }  // namespace genmod
+
+namespace genmod {
+namespace {
+
+// On an open mesh the set's edges on the mesh boundary also get side quads (the thesis's
+// occurrence rule), so one lone quad becomes an open box: 4 walls and the cap.
+TEST(Extrusion, LoneQuadOnAnOpenMeshBecomesAnOpenBox) {
+  PolyMesh quad;
+  PolyMesh::VertexHandle v[4] = {quad.add_vertex(Vec3(0, 0, 0)), quad.add_vertex(Vec3(1, 0, 0)),
+                                 quad.add_vertex(Vec3(1, 1, 0)), quad.add_vertex(Vec3(0, 1, 0))};
+  quad.add_face(v[0], v[1], v[2], v[3]);
+  FaceList caps = extrude(quad, all_faces(quad), Vec3(0, 0, 1));
+  EXPECT_EQ(counts(quad), (MeshCounts{8, 12, 5}));
+  ASSERT_EQ(caps.size(), 1u);
+  for (auto u : quad.fv_range(caps[0])) EXPECT_EQ(quad.point(u)[2], 1.0);
+}
+
+TEST(Extrusion, SameInputGivesTheSameMesh) {
+  PolyMesh a = make_grid_box(Vec3(0, 0, 0), Vec3(4, 4, 4), 4, "x"), b = a;
+  FaceList patch = select_faces(a, all_faces(a), RatioBox{0, 0.75, 0, 1, 0.5, 1});
+  extrude(a, patch, Vec3(0.3, 0, 1));
+  extrude(b, patch, Vec3(0.3, 0, 1));
+  EXPECT_EQ(test::snapshot(a), test::snapshot(b));
+  // The set wraps round the box, so one vector pushes its -x faces into the body: the result
+  // is self-intersecting (legal, as in the thesis) but still a closed manifold.
+  EXPECT_TRUE(is_closed_manifold(a));
+}
+
+}  // namespace
+}  // namespace genmod

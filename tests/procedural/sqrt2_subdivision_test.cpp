@@ -194,3 +194,31 @@ TEST(Sqrt2Subdivision, BadInputIsRefused) {
 
 }  // namespace
 }  // namespace genmod
+
+namespace genmod {
+namespace {
+
+// On an open mesh the boundary vertices stay and each boundary edge gives a triangle.
+TEST(Sqrt2Subdivision, LoneQuadOnAnOpenMesh) {
+  PolyMesh quad;
+  PolyMesh::VertexHandle v[4] = {quad.add_vertex(Vec3(0, 0, 0)), quad.add_vertex(Vec3(1, 0, 0)),
+                                 quad.add_vertex(Vec3(1, 1, 0)), quad.add_vertex(Vec3(0, 1, 0))};
+  quad.add_face(v[0], v[1], v[2], v[3]);
+  FaceList created = sqrt2_subdivide(quad, all_faces(quad), 1, 1.0);
+  EXPECT_EQ(counts(quad), (MeshCounts{5, 8, 4}));
+  EXPECT_EQ(created.size(), 4u);
+  EXPECT_EQ(quad.point(PolyMesh::VertexHandle(0)), Vec3(0, 0, 0));
+  EXPECT_EQ(quad.point(PolyMesh::VertexHandle(4)), Vec3(0.5, 0.5, 0));
+}
+
+TEST(Sqrt2Subdivision, SameInputGivesTheSameMesh) {
+  PolyMesh a = make_grid_box(Vec3(0, 0, 0), Vec3(4, 4, 4), 3, "x"), b = a;
+  FaceList half = select_faces(a, all_faces(a), RatioBox{0, 1, 0, 1, 0.5, 1});
+  sqrt2_subdivide(a, half, 2, 0.7);
+  sqrt2_subdivide(b, half, 2, 0.7);
+  EXPECT_EQ(test::snapshot(a), test::snapshot(b));
+  expect_valid_closed(a);
+}
+
+}  // namespace
+}  // namespace genmod
