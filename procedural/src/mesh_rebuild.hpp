@@ -27,8 +27,9 @@ struct MeshParts {
   }
 };
 
-// Vertices keep their index; faces keep their order. Throws std::logic_error (naming `tool`)
-// if OpenMesh refuses a face, which would mean the tool produced a non-manifold mesh.
+// Vertices keep their index; faces keep their order. Throws std::invalid_argument (naming
+// `tool`) if OpenMesh refuses a face: the input made the result non-manifold (an extruded set
+// whose faces touch at a vertex only).
 inline PolyMesh build_mesh(const MeshParts& parts, const char* tool) {
   PolyMesh mesh;
   const std::size_t n_faces = parts.labels.size();
@@ -40,7 +41,8 @@ inline PolyMesh build_mesh(const MeshParts& parts, const char* tool) {
     for (int c = parts.face_start[i]; c < parts.face_start[i + 1]; ++c)
       ring.push_back(PolyMesh::VertexHandle(parts.corners[c]));
     PolyMesh::FaceHandle f = mesh.add_face(ring);
-    if (!f.is_valid()) throw std::logic_error(std::string(tool) + ": a result face was refused as non-manifold");
+    if (!f.is_valid()) throw std::invalid_argument(std::string(tool) +
+                                  ": the result would not be a manifold (faces of the set touch at a vertex only?)");
     if (!parts.labels[i].empty()) set_face_label(mesh, f, parts.labels[i]);
   }
   return mesh;

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -171,6 +172,27 @@ TEST(Extrusion, SameInputGivesTheSameMesh) {
   // The set wraps round the box, so one vector pushes its -x faces into the body: the result
   // is self-intersecting (legal, as in the thesis) but still a closed manifold.
   EXPECT_TRUE(is_closed_manifold(a));
+}
+
+}  // namespace
+}  // namespace genmod
+
+namespace genmod {
+namespace {
+
+// Two faces that touch only at a vertex would share the wall edge through it four times: the
+// result is not a manifold, so the tool refuses and leaves the mesh as it was.
+TEST(Extrusion, FacesTouchingAtAVertexOnlyAreRefusedWithoutChange) {
+  PolyMesh mesh = make_grid_box(Vec3(0, 0, 0), Vec3(2, 2, 2), 2);
+  FaceList a = select_faces(mesh, all_faces(mesh), RatioBox{0, 0.5, 0, 0.5, 1, 1});
+  FaceList b = select_faces(mesh, all_faces(mesh), RatioBox{0.5, 1, 0.5, 1, 1, 1});
+  ASSERT_EQ(a.size(), 1u);
+  ASSERT_EQ(b.size(), 1u);
+  const test::Snapshot before = test::snapshot(mesh);
+  FaceList both{a[0], b[0]};
+  std::sort(both.begin(), both.end());
+  EXPECT_THROW(extrude(mesh, both, Vec3(0, 0, 1)), std::invalid_argument);
+  EXPECT_EQ(test::snapshot(mesh), before);
 }
 
 }  // namespace

@@ -18,7 +18,9 @@ namespace genmod {
 // vertices; faces outside the set keep their order, followed per input face by its sides and
 // its cap. Old handles are invalid afterwards (recompute named sets with FaceSets::update).
 // An empty set leaves the mesh untouched. Throws std::invalid_argument ("extrude: ...") for a
-// face not in the mesh, a deleted or repeated face, or a non-finite vector. A zero or inward
+// face not in the mesh, a deleted or repeated face, a non-finite vector, or a set whose
+// faces touch at a vertex only (the wall edge through it would carry four faces; the mesh is
+// then left as it was). A zero or inward
 // vector gives a degenerate but legal result (as in the thesis).
 FaceList extrude(PolyMesh& mesh, const FaceList& faces, const Vec3& by);
 
