@@ -7,3 +7,6 @@
 #include "genmod/procedural/bezier_curve.hpp"
 #include "genmod/procedural/curve_shaping.hpp"
 #include "genmod/procedural/stitching.hpp"
+#include "genmod/procedural/selection.hpp"
+#include "genmod/procedural/extrusion.hpp"
+#include "genmod/procedural/sqrt2_subdivision.hpp"
