@@ -2,6 +2,7 @@
 #include "genmod/procedural/grid_box.hpp"
 #include "genmod/procedural/selection.hpp"
 #include "genmod/tessellate/validate.hpp"
+#include "mesh_test_support.hpp"
 
 #include "tool_test_support.hpp"
 
@@ -153,10 +154,7 @@ namespace {
 // On an open mesh the set's edges on the mesh boundary also get side quads (the thesis's
 // occurrence rule), so one lone quad becomes an open box: 4 walls and the cap.
 TEST(Extrusion, LoneQuadOnAnOpenMeshBecomesAnOpenBox) {
-  PolyMesh quad;
-  PolyMesh::VertexHandle v[4] = {quad.add_vertex(Vec3(0, 0, 0)), quad.add_vertex(Vec3(1, 0, 0)),
-                                 quad.add_vertex(Vec3(1, 1, 0)), quad.add_vertex(Vec3(0, 1, 0))};
-  quad.add_face(v[0], v[1], v[2], v[3]);
+  PolyMesh quad = test::unit_quad();
   FaceList caps = extrude(quad, all_faces(quad), Vec3(0, 0, 1));
   EXPECT_EQ(counts(quad), (MeshCounts{8, 12, 5}));
   ASSERT_EQ(caps.size(), 1u);

@@ -1,4 +1,5 @@
-// Helpers for the mesh tool tests: bitwise mesh equality and selection by face centroids.
+// Helpers for the mesh tool tests: bitwise mesh equality, selection by face centroids, and a
+// lone unit quad (an open mesh).
 #pragma once
 
 #include "genmod/procedural/poly_mesh.hpp"
@@ -53,6 +54,15 @@ inline FaceList faces_with_centroid_in(const PolyMesh& mesh, const Vec3& lo, con
     if (inside) out.push_back(f);
   }
   return out;
+}
+
+// The unit square in z = 0 as one counter-clockwise quad: an open mesh with four boundary edges.
+inline PolyMesh unit_quad() {
+  PolyMesh quad;
+  const PolyMesh::VertexHandle v[4] = {quad.add_vertex(Vec3(0, 0, 0)), quad.add_vertex(Vec3(1, 0, 0)),
+                                       quad.add_vertex(Vec3(1, 1, 0)), quad.add_vertex(Vec3(0, 1, 0))};
+  quad.add_face(v[0], v[1], v[2], v[3]);
+  return quad;
 }
 
 }  // namespace genmod::test

@@ -2,6 +2,7 @@
 #include "genmod/procedural/selection.hpp"
 #include "genmod/procedural/sqrt2_subdivision.hpp"
 #include "genmod/tessellate/validate.hpp"
+#include "mesh_test_support.hpp"
 
 #include "tool_test_support.hpp"
 
@@ -200,10 +201,7 @@ namespace {
 
 // On an open mesh the boundary vertices stay and each boundary edge gives a triangle.
 TEST(Sqrt2Subdivision, LoneQuadOnAnOpenMesh) {
-  PolyMesh quad;
-  PolyMesh::VertexHandle v[4] = {quad.add_vertex(Vec3(0, 0, 0)), quad.add_vertex(Vec3(1, 0, 0)),
-                                 quad.add_vertex(Vec3(1, 1, 0)), quad.add_vertex(Vec3(0, 1, 0))};
-  quad.add_face(v[0], v[1], v[2], v[3]);
+  PolyMesh quad = test::unit_quad();
   FaceList created = sqrt2_subdivide(quad, all_faces(quad), 1, 1.0);
   EXPECT_EQ(counts(quad), (MeshCounts{5, 8, 4}));
   EXPECT_EQ(created.size(), 4u);
