@@ -3,3 +3,4 @@
 #pragma once
 
 #include "genmod/procedural/poly_mesh.hpp"
+#include "genmod/procedural/procedure_layer.hpp"
