@@ -20,6 +20,21 @@ TEST(Rng, JavaRandomVectors) {
   for (double e : expected) EXPECT_EQ(r.next_double(), e);
 }
 
+// Values printed by OpenJDK's java.util.Random on this machine (seed 7: nextInt(10),
+// nextInt(16), nextFloat, nextLong, nextBoolean in that order; seed 99: four nextGaussian).
+TEST(Rng, JavaRandomOtherDraws) {
+  Rng r(7);
+  EXPECT_EQ(r.next_int(10), 6);
+  EXPECT_EQ(r.next_int(16), 10);
+  EXPECT_EQ(r.next_float(), 0.7491696f);
+  EXPECT_EQ(r.next_long(), 177623051241444105LL);
+  EXPECT_FALSE(r.next_boolean());
+  // Gaussians go through log and sqrt, so within a few ulps rather than bitwise (header).
+  Rng g(99);
+  const double gauss[] = {1.2948166272574204, -0.8890594164103023, 0.23432196963807342, 0.27245230229217654};
+  for (double e : gauss) EXPECT_DOUBLE_EQ(g.next_gaussian(), e);
+}
+
 TEST(Rng, BoundedDrawsAndSeedAddition) {
   Rng r(7);
   for (int i = 0; i < 1000; ++i) {
