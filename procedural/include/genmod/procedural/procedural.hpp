@@ -10,3 +10,4 @@
 #include "genmod/procedural/selection.hpp"
 #include "genmod/procedural/extrusion.hpp"
 #include "genmod/procedural/sqrt2_subdivision.hpp"
+#include "genmod/procedural/procedure_layer.hpp"
