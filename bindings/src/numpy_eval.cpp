@@ -23,14 +23,14 @@ using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 // A tape over the coordinates x(0) .. x(columns - 1), in that order.
 struct ColumnTape {
-  ColumnTape(const Fn& f, std::size_t columns) : tape(f, coordinates(f, columns)), columns(columns) {}
+  ColumnTape(const Fn& f, std::size_t n) : tape(f, coordinates(f, n)), columns(n) {}
 
-  static std::vector<int> coordinates(const Fn& f, std::size_t columns) {
+  static std::vector<int> coordinates(const Fn& f, std::size_t n) {
     const std::vector<int> in = f.inputs();
-    if (!in.empty() && static_cast<std::size_t>(in.back()) >= columns)
+    if (!in.empty() && static_cast<std::size_t>(in.back()) >= n)
       throw std::invalid_argument("genmod: the function depends on x(" + std::to_string(in.back()) + ") but the points have " +
-                                  std::to_string(columns) + " column" + (columns == 1 ? "" : "s"));
-    std::vector<int> all(columns);
+                                  std::to_string(n) + " column" + (n == 1 ? "" : "s"));
+    std::vector<int> all(n);
     std::iota(all.begin(), all.end(), 0);
     return all;
   }
