@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The whole test suite: installs the Debian packages, builds genmod (Release, with
-# -frounding-math), runs every test with ctest, then builds the libraries and their tests again
+# -frounding-math) with the Python module, runs every test with ctest (the C++ suites and the
+# pytest suite of tests/python), then builds the libraries and their tests again
 # under AddressSanitizer + UndefinedBehaviorSanitizer and runs those (the install test is
 # skipped there: installed static libraries would need the sanitizer runtime).
 set -euo pipefail
