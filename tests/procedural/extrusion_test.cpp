@@ -15,11 +15,7 @@
 namespace genmod {
 namespace {
 
-void expect_valid_closed(const PolyMesh& mesh) {
-  EXPECT_TRUE(is_closed_manifold(mesh));
-  MeshValidity v = validate(to_triangle_mesh(mesh));
-  EXPECT_TRUE(v.valid()) << describe(v);
-}
+using test::expect_valid_closed;
 
 MeshCounts plus(MeshCounts c, std::size_t dv, std::size_t de, std::size_t df) {
   return {c.vertices + dv, c.edges + de, c.faces + df};

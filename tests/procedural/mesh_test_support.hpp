@@ -3,6 +3,9 @@
 #pragma once
 
 #include "genmod/procedural/poly_mesh.hpp"
+#include "genmod/tessellate/validate.hpp"
+
+#include <gtest/gtest.h>
 
 #include <cstring>
 #include <string>
@@ -63,6 +66,13 @@ inline PolyMesh unit_quad() {
                                        quad.add_vertex(Vec3(1, 1, 0)), quad.add_vertex(Vec3(0, 1, 0))};
   quad.add_face(v[0], v[1], v[2], v[3]);
   return quad;
+}
+
+// A closed 2-manifold whose triangulation the validator accepts (outward, no self-intersections).
+inline void expect_valid_closed(const PolyMesh& mesh) {
+  EXPECT_TRUE(is_closed_manifold(mesh));
+  const MeshValidity v = validate(to_triangle_mesh(mesh));
+  EXPECT_TRUE(v.valid()) << describe(v);
 }
 
 }  // namespace genmod::test

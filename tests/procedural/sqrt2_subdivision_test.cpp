@@ -14,11 +14,7 @@
 namespace genmod {
 namespace {
 
-void expect_valid_closed(const PolyMesh& mesh) {
-  EXPECT_TRUE(is_closed_manifold(mesh));
-  MeshValidity v = validate(to_triangle_mesh(mesh));
-  EXPECT_TRUE(v.valid()) << describe(v);
-}
+using test::expect_valid_closed;
 
 bool all_quads(const PolyMesh& mesh) {
   for (auto f : mesh.faces())
