@@ -71,7 +71,13 @@ TEST(Lifetime, MemoryStaysFlatOverAHundredThousandShapes) {
   // 65,536 live ones), and the process did not grow after its first 10,000 shapes.
   EXPECT_EQ(dag::size(), nodes_before);
   EXPECT_EQ(dag::custom_count(), ops_before);
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer holds freed memory in quarantine, so the process grows by design there;
+  // the counts above are the check.
+  (void)rss_at_10k;
+#else
   EXPECT_LT(resident_kib(), rss_at_10k + 8 * 1024) << "resident memory grew from " << rss_at_10k << " KiB";
+#endif
 }
 
 TEST(Lifetime, ReusedIdsNeverReturnStaleNodes) {
