@@ -6,8 +6,10 @@
 // broadcast a scalar operand over the other's components; any other combination throws
 // std::invalid_argument naming both dimensions.
 //
+// Example:
 //   Fn u = x(0), v = x(1);
 //   Fn sphere = cat({cos(u) * cos(v), sin(u) * cos(v), sin(v)});
+//   Fn p = cat({x(0), x(1), x(2)});
 //   Fn inside = length(p) < 1.0;        // 0/1 valued
 #pragma once
 

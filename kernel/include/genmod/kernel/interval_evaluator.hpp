@@ -1,9 +1,12 @@
 // Interval evaluation of a tape over a box (the natural inclusion function), with the
 // per-clause choices that make tape pruning possible.
 //
+// Example:
+//   Tape tape(min(x(0), x(1)));
+//   Box box = {Interval(0, 1), Interval(2, 3)};
 //   IntervalEvaluator ev;
 //   auto y = ev.eval(tape, box);          // y[j] contains f_j(x) for every x in the box
-//   Tape shorter = tape.simplify(ev.choices());
+//   Tape shorter = tape.simplify(ev.choices());   // x(0) alone: min's left side is live
 //
 // The whole tape runs inside one RoundingScope (upward rounding), so the cost per clause is
 // close to plain double arithmetic.

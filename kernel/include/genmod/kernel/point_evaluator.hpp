@@ -1,5 +1,7 @@
 // Scalar point evaluation of a tape: one point per call.
 //
+// Example:
+//   Fn f = cat({x(0) + x(1), sqrt(x(0) - x(1))});
 //   Tape t(f);
 //   PointEvaluator ev;
 //   std::span<const double> y = ev.eval(t, {0.5, 0.25});   // y[j] = f_j(point); NaN = error

@@ -17,6 +17,8 @@
 // several surfaces (the plate's walls and faces, the key's sides and caps, the bear's scalp
 // and hairs) has the further ones in Model::extra_patches; model_patches() lists them all.
 //
+// Example:
+//   using namespace genmod::models;
 //   const Model& m = find_model("doorknob");
 //   Fn s = build_model(m, {{"bulge_radius", 0.9}});   // unspecified parameters keep defaults
 //   Mesh mesh = mesh_model(m, s, 64);

@@ -1,9 +1,11 @@
 // The implicit gallery: named implicit solids f(x, y, z) < 0 with documented parameters and
 // the box to mesh them in, for `genmod list` / `genmod mesh NAME --min-feature H` and tests.
 //
-//   const ImplicitModel& m = find_implicit_model("sphere_gyroid");
+// Example:
+//   using namespace genmod::models;
+//   const ImplicitModel& m = *find_implicit_model("sphere_gyroid");   // nullptr if unknown
 //   Fn f = build_implicit_model(m, {{"radius", 2.5}});
-//   ImplicitMesh mesh = mesh_implicit(f, m.box, {.min_feature = m.min_feature});
+//   ImplicitMesh mesh = mesh_implicit(f, m.box, {.min_feature = 4 * m.min_feature});
 #pragma once
 
 #include "genmod/kernel/fn.hpp"

@@ -9,6 +9,7 @@
 // custom operator), so its inclusion function, derivative and batch evaluation come from
 // the kernel and are sound.
 //
+// Example:
 //   Fn D = segment_convolution({0, 0, 0}, {1, 0, 0}, 0.1) + segment_convolution({1, 0, 0}, {1, 1, 0}, 0.1);
 //   Fn f = density_to_implicit(D);       // 1/2 - D, negative inside
 #pragma once

@@ -18,6 +18,9 @@
 // cannot reach the point (they are exactly 0 there). The derivative is a culled field of the
 // elements' derivatives: compact ones culled as their elements, Gaussian ones never.
 //
+// Example:
+//   Point3 a{0, 0, 0}, b{1, 0, 0};
+//   double r = 0.1;
 //   std::vector<FieldElement> es;
 //   es.push_back({segment_convolution(a, b, r), a, b, 1.0, r, Falloff::gaussian});
 //   Fn D = culled_field(es);

@@ -21,6 +21,7 @@
 // larger than 2^1000 (about 1.07e301) in magnitude, where values and enclosures could
 // overflow; every curve that is built has derivatives that can be built too.
 //
+// Example:
 //   Curve c = Curve::catmull_rom({{0, 0}, {1, 1}, {2, 0}});
 //   Fn path = c(x(0));                 // a 2D curve in x(0)
 //   Fn speed = length(derivative(path, 0));

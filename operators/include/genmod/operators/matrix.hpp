@@ -3,6 +3,8 @@
 // matrix product, determinant or inverse is an ordinary expression DAG (shared
 // subexpressions are hash-consed) and gets the kernel's three methods for free.
 //
+// Example:
+//   Fn a = x(0), b = x(1), c = x(2), d = x(3);
 //   Matrix m = matrix(cat({a, b, c, d}), 2, 2);
 //   Fn det = determinant(m);          // a d - b c
 //   Fn row1 = m[1];                   // (c, d)

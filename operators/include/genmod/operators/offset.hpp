@@ -8,9 +8,11 @@
 // the direction of travel, the printed formula. A positive offset therefore moves a
 // counter-clockwise curve INWARD (the thesis's text says outward; its formula says inward):
 //
-//   Fn circle = cat({cos(2 pi x(0)), sin(2 pi x(0))});
+// Example:
+//   const double pi = std::numbers::pi;
+//   Fn circle = cat({cos(2 * pi * x(0)), sin(2 * pi * x(0))});
 //   Fn inner = offset_curve(circle, 0.25);          // the circle of radius 0.75
-//   Fn tube = closed_offset(cat({x(0), 0.0}), 0.1); // a stadium around [0,1] x {0}
+//   Fn tube = closed_offset(cat({x(0), Fn(0.0)}), 0.1); // a stadium around [0,1] x {0}
 //
 // Offsets are errors (NaN) where the curve's speed vanishes, and they self-intersect where
 // |r| exceeds the radius of curvature on the side they move to. Wrong dimensions throw
@@ -52,6 +54,7 @@ Fn closed_offset(const Fn& curve, const Fn& r, int parm = 0);
 // divides by sinc of the half turning angle, which is >= 2/pi for |height| <= |p2 - p1| / 2).
 // Range: any height is accepted; |height| = |p2 - p1| / 2 is a semicircle, larger heights give
 // the major arc (at most a full circle as height -> infinity). p1 = p2 is an error (NaN).
+// Example:
 //   Fn bowl = arc_2pt_height(cat({-1.0, 0.0}), cat({1.0, 0.0}), -0.3, x(0));  // sags down
 Fn arc_2pt_height(const Fn& p1, const Fn& p2, const Fn& height, const Fn& t);
 

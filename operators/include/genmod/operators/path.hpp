@@ -5,6 +5,9 @@
 // the start radius by a turning angle from atan2, so the finished curve is an ordinary Fn:
 // points, inclusions and derivatives come from the kernel.
 //
+// Example:
+//   Fn w = 0.4 + 0.2 * x(1);                       // slot width, a function of v = x(1)
+//   Fn o = cat({0.0, 0.0});                        // the disk's center
 //   Path p;                                        // a curve of x(0)
 //   p.move_to(cat({w / 2, -1.0}));                 // outside the disk: see close()
 //   p.line_to_arc(cat({w / 2, 1.0}), o, 0.5, true, true);

@@ -13,6 +13,7 @@
 // compose it with the inverse transform: translate_implicit(f, t)(p) = f(p - t). Only rigid
 // transforms keep the value a distance.
 //
+// Example:
 //   Fn ball = implicit_sphere(1.0);
 //   Fn part = csg_difference(implicit_box(cat({1.0, 1.0, 1.0})), translate_implicit(ball, cat({1.0, 1.0, 1.0})));
 #pragma once

@@ -9,6 +9,7 @@
 // Distance surfaces follow genmod's implicit convention directly: f = d^2 / r^2 - 1 is
 // negative inside, zero on the surface (a sphere or capsule of radius r), positive outside.
 //
+// Example:
 //   Fn arm = distance_surface({distance2_to_segment({0, 0, 0}, {1, 0, 0})}, {0.1});
 #pragma once
 

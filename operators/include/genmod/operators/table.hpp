@@ -15,6 +15,7 @@
 // Bad input (n_k < 2 for k >= 1, n0 < 1, a sample count that is not the product, non-finite
 // samples, `in` of the wrong dimension) throws std::invalid_argument.
 //
+// Example:
 //   const double heights[] = {0, 1, 1, 2};                       // 2 x 2 nodes, scalar
 //   Fn h = table(heights, std::vector<int>{1, 2, 2}, cat({x(0), x(1)}));   // = x(0) + x(1)
 #pragma once

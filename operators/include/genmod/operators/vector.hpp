@@ -3,6 +3,8 @@
 // methods (point, inclusion, derivative) apply unchanged. Cartesian product and projection
 // are the kernel's cat() and Fn::operator[].
 //
+// Example:
+//   Fn s = cat({x(0), x(1), square(x(0)) + square(x(1))});       // a paraboloid
 //   Fn n = normalize(cross(derivative(s, 0), derivative(s, 1)));   // surface normal
 #pragma once
 

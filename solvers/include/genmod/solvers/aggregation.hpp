@@ -7,8 +7,9 @@
 // since a hull may reach a box that touched neither original). The output is deterministic:
 // groups are ordered by their smallest member index, members ascending.
 //
-//   std::vector<Box> boxes = ...;              // e.g. the solution boxes of a solve
-//   for (const Aggregate& g : aggregate(boxes))
+// Example:
+//   std::vector<Box> boxes = {{Interval(0, 1)}, {Interval(1, 2)}, {Interval(5, 6)}};
+//   for (const Aggregate& g : aggregate(boxes))        // two groups: [0, 2] and [5, 6]
 //     std::cout << g.members.size() << " boxes around " << midpoint(g.hull)[0] << "\n";
 #pragma once
 

@@ -1,6 +1,8 @@
 // Reparameterization by arclength (snyder.md section 2.5, GENMOD's
 // m_reparameterize_by_arclength): the same curve, traced at constant speed over [0, 1].
 //
+// Example:
+//   const double pi = std::numbers::pi;
 //   Fn theta = (pi / 4) * (x(0) + square(x(0)));
 //   Fn gamma = cat({cos(theta), sin(theta)});           // a quarter circle, nonuniform speed
 //   Fn even = reparameterize_by_arclength(gamma, 0);     // (cos(pi s / 2), sin(pi s / 2))

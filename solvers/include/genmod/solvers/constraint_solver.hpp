@@ -9,6 +9,7 @@
 // even when a limit stops the search (the boxes left unexplored are returned, marked
 // Unexplored). Each returned box says what is certified and what is only possible.
 //
+// Example:
 //   using namespace genmod;
 //   Fn c = eq(square(x(0)) + square(x(1)), 1.0) && eq(x(0), x(1));
 //   int unknowns[] = {0, 1};

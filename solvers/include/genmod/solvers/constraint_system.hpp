@@ -5,12 +5,14 @@
 // into its own tape; && || ! become the logic tree above the atoms. A scalar that is not a
 // relation but is used as a truth value ("nonzero is true") is an atom h != 0 (Nonzero).
 //
+// Example:
 //   Fn c = eq(square(x(0)) + square(x(1)), 1.0) && (x(0) < x(1));
 //   int unknowns[] = {0, 1};
 //   ConstraintSystem sys(c, unknowns);          // 2 atoms: x0^2+x1^2-1 == 0, x0-x1 < 0
 //   std::vector<std::uint8_t> tags(sys.num_atoms(), kTagUnknown);
 //   AtomValues v;
 //   IntervalEvaluator ev;
+//   Box box = {Interval(-1, 0), Interval(0.5, 1)};
 //   Truth t = sys.evaluate(box, tags, v, ev);   // False / True / Unknown over the box
 //
 // Inputs: every tape takes the unknowns first, then the free parameters (in the given order);

@@ -14,6 +14,8 @@
 // of a negative, division by zero) are not solutions (the constraint is NaN there) and may be
 // removed. Parameters (inputs after the unknowns) are read but never narrowed.
 //
+// Example:
+//   int unknowns[] = {0, 1};
 //   ConstraintSystem sys(eq(square(x(0)) + square(x(1)), 1.0), unknowns);
 //   Hc4Contractor hc4(sys);
 //   Box b = {Interval(0.9, 2.0), Interval(-0.1, 0.1)};

@@ -3,7 +3,8 @@
 // from pieces of the operands (and fillet arcs), so it is an ordinary Fn of x(0) that sweeps,
 // interpolation and tessellation accept like any cross section.
 //
-//   using namespace genmod;
+// Example:
+//   const double pi = std::numbers::pi;
 //   Fn a = cat({cos(2 * pi * x(0)), sin(2 * pi * x(0))});
 //   Fn b = cat({1 + cos(2 * pi * x(0)), sin(2 * pi * x(0))});
 //   Fn lens = region_boolean(a, b, RegionOp::Intersection);          // two arcs, two corners

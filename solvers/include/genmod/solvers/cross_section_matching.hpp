@@ -5,7 +5,8 @@
 // reparameterized (the same point set, a different speed), as an Fn with point values,
 // inclusions and derivatives, ready for interp_cross_sections().
 //
-//   using namespace genmod;
+// Example:
+//   const double pi = std::numbers::pi;
 //   Fn u = x(0), v = x(1);
 //   Fn c = cat({cos(2 * pi * u), sin(2 * pi * u)});
 //   Fn d = -2.0 * c;                                              // radius 2, starting at angle pi

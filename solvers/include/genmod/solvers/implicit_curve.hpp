@@ -1,6 +1,7 @@
 // Implicit curve approximation: Snyder's Algorithm 5.3 (snyder.md section 5.2), the curve
 // F(x) = 0 of n - 1 equations in n unknowns over a box X, as linked polylines.
 //
+// Example:
 //   using namespace genmod;
 //   Fn f = square(x(0)) + square(x(1)) - 0.5;
 //   int coords[] = {0, 1};

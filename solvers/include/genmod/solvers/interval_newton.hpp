@@ -15,6 +15,7 @@
 // the IntervalEvaluator. Both steps need F continuously differentiable on X: when the interval
 // evaluation says F or J may be discontinuous or fail on X, the step is skipped (Skipped).
 //
+// Example:
 //   Fn F = cat({square(x(0)) + square(x(1)) - 1.0, x(0) - x(1)});
 //   int u[] = {0, 1};
 //   IntervalNewton newton(F, u);

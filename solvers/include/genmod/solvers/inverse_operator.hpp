@@ -2,6 +2,7 @@
 // coordinate, with point evaluation, an inclusion function and an implicit-function-theorem
 // derivative, so it nests inside functions that are solved, minimized or tessellated.
 //
+// Example:
 //   using namespace genmod;
 //   Fn t = x(0);
 //   Fn r = inverse(t * t * t + t, x(1), 0);   // t in [0,1] with t^3 + t = x(1); a function of x(1)

@@ -2,6 +2,7 @@
 // and the minimum value of an objective over the unknowns, as functions of the remaining (free)
 // coordinates.
 //
+// Example:
 //   using namespace genmod;
 //   const int unknowns[] = {0};
 //   Fn f = square(x(0) - x(1)) + square(x(1));            // min over x0 is x1^2, at x0 = x1

@@ -6,6 +6,7 @@
 // whose lower bound exceeds the best verified upper bound are discarded. The upper bound u
 // comes only from points *proven* feasible, with the objective bounded rigorously there.
 //
+// Example:
 //   Fn x0 = x(0), x1 = x(1);
 //   Fn f = square(x0 - 0.3) + square(x1 + 0.2);
 //   Fn c = x0 + x1 >= 1.0;                                 // 0/1 valued; Fn(1.0) for none

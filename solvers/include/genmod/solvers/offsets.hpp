@@ -14,8 +14,10 @@
 // A box is dropped only when its bracket proves it misses the set, so no part of the offset
 // is lost; boxes narrower than epsilon that remain undecided are returned as Boundary.
 //
+// Example:
 //   Fn segment = cat({2 * x(0) - 1, Fn(0.0)});            // [(-1, 0), (1, 0)]
-//   OffsetResult stadium = b_offset(segment, 0.25, {Interval(-2, 2), Interval(-2, 2)});
+//   Box region = {Interval(-2, 2), Interval(-2, 2)};
+//   OffsetResult stadium = b_offset(segment, 0.25, region);
 #pragma once
 
 #include "genmod/kernel/fn.hpp"

@@ -15,6 +15,8 @@
 // solver's promise), and `complete` is false when a search limit stopped a search, in which
 // case the answer covers what the search could not rule out.
 //
+// Example:
+//   const double pi = std::numbers::pi;
 //   Fn circle = cat({cos(2 * pi * x(0)), sin(2 * pi * x(0))});
 //   Fn line = cat({2 * x(0) - 1, Fn(0.5)});
 //   CurveIntersections hits = curve_intersections(circle, line);   // 2 hits, certified

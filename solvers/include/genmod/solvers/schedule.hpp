@@ -2,6 +2,7 @@
 // matching one curve against another with the inverse operator. Each result is an ordinary Fn
 // (point value, inclusion, derivative through inverse() and compose()), so it nests in sweeps.
 //
+// Example:
 //   using namespace genmod;
 //   Fn v = x(1);
 //   Fn radius = cat({v * v, 0.5 + 0.5 * v});         // (z, r): r as a curve over z, parameter v

@@ -3,6 +3,7 @@
 // of the free coordinates and an implicit-function-theorem derivative, so a solve can be nested
 // inside a function that is itself solved, minimized or tessellated.
 //
+// Example:
 //   using namespace genmod;
 //   const int unknowns[] = {0};
 //   Fn r = solve(eq(square(x(0)) + square(x(1)), 1.0), unknowns, {Interval(0, 2)}, 1e-9);

@@ -5,8 +5,16 @@
 // writes each mesh with write_mesh, optionally validates the file as written (read back, no
 // welding), and returns one result row per job, in job order.
 //
+// Example:
+//   Fn ball = implicit_sphere(1.0);
+//   std::filesystem::path out = std::filesystem::temp_directory_path() / "ball.obj";
 //   std::vector<BatchJob> jobs;
-//   jobs.push_back({"torus", "out/torus.obj", [] { return BatchMesh{make_torus_mesh()}; }});
+//   jobs.push_back({"ball", out, [&] {
+//     BatchMesh m;
+//     m.mesh = mesh_implicit(ball, {Interval(-2, 2), Interval(-2, 2), Interval(-2, 2)},
+//                            {.min_feature = 0.25}).mesh;
+//     return m;
+//   }});
 //   std::vector<BatchResult> rows = run_batch(jobs, {.threads = 2});
 //   std::cout << batch_report_csv(rows);
 //

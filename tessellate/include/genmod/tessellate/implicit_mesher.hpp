@@ -1,10 +1,11 @@
 // Meshing implicit solids f(x, y, z) < 0 into closed, manifold, intersection-free triangle
 // meshes (the algorithm is described in tessellate/README.md).
 //
-//   ImplicitSurface shape(load_vm("sphere_gyroid.vm"));             // compiled once
-//   ImplicitMeshSettings s{.min_feature = 0.025, .tolerance = 0.01};
-//   ImplicitMesh m = mesh_implicit(shape, {Interval(-5, 5), Interval(-5, 5), Interval(-5, 5)}, s);
-//   write_mesh(m.mesh, "gyroid.obj");
+// Example:
+//   ImplicitSurface shape(implicit_sphere(1.0));                  // compiled once
+//   ImplicitMeshSettings s{.min_feature = 0.1, .tolerance = 0.01};
+//   ImplicitMesh m = mesh_implicit(shape, {Interval(-2, 2), Interval(-2, 2), Interval(-2, 2)}, s);
+//   // m.mesh is closed and manifold; write_mesh(m.mesh, "ball.obj") saves it
 //
 // The mesh bounds the solid intersected with the box: where the solid crosses the box, the
 // box faces close it. By construction (and checked by validate() in the tests) it is

@@ -12,12 +12,13 @@
 // from the root. For the domain [0,1]: 00 -> [0, 0.25], 0010 -> [0.125, 0.1875], and
 // (0010, 1100) -> [0.125, 0.1875] x [0.75, 0.8125].
 //
+// Example:
 //   KdTree t = KdTree::full({Interval(0, 1), Interval(0, 1)});
 //   auto [low, high] = t.split(t.root(), 1);              // [0,1]x[0,.5] and [0,1]x[.5,1]
 //   KdTree s(t.domain());
 //   s.insert_addonly(KdAddress::parse({"1", ""}));        // s has the leaf [.5,1]x[0,1]
 //   merge_addonly(t, s);                                  // nothing to add: t covers it
-//   for (KdTree::Index leaf : t.leaves()) { KdBox b = t.box(leaf); ... t.neighbours(leaf); }
+//   for (KdTree::Index leaf : t.leaves()) { KdBox b = t.box(leaf); auto n = t.neighbours(leaf); }
 //
 // Coordinates are exact dyadic arithmetic: the point at index/2^depth of a domain side [a, b]
 // is a + (b - a) * (index/2^depth) with the fraction in lowest terms (a and b themselves at 0

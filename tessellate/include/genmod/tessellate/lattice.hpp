@@ -19,6 +19,8 @@
 // more tables than free coordinates) falls back to recomputing its subfunctions from the
 // lattice coordinates, which is still exact, only slower; LatticeStats reports it.
 //
+// Example:
+//   Fn surface = cat({x(0), x(1), x(0) * x(1)});
 //   Lattice lat({{0, 0.0, 1.0, 256}, {1, 0.0, 1.0, 256}});
 //   LatticeStats stats;
 //   std::vector<double> xyz = evaluate_lattice(surface, lat, LatticeMethod::Tables, &stats);

@@ -3,9 +3,13 @@
 // conforming triangulation of its leaves, and one vertex per surface point where patches or
 // edges meet.
 //
+// Example:
+//   const double pi = std::numbers::pi;
+//   Fn u = 2 * pi * x(0), v = pi * (x(1) - 0.5);
+//   Fn sphere_surface = cat({cos(u) * cos(v), sin(u) * cos(v), sin(v)});
 //   std::vector<SurfacePatch> patches{{sphere_surface, Interval(0, 1), Interval(0, 1), true}};
-//   AdaptiveMesh m = mesh_adaptive(patches, {.tolerance = 1e-3});
-//   write_mesh(m.mesh, "sphere.obj");            // closed, outward; m.distance_bound <= 1e-3
+//   AdaptiveMesh m = mesh_adaptive(patches, {.tolerance = 1e-2});
+//   // m.mesh is closed and outward; m.distance_bound <= 1e-2; write_mesh(m.mesh, "sphere.obj")
 //
 // What the result guarantees:
 //  1. Distance. Every triangle lies inside one leaf X of the kd-tree (its corners are surface

@@ -13,7 +13,10 @@
 // looking into the inside, or a misoriented patch stands out:
 //   background 255, front faces 60..230, back faces 20..80.
 //
-//   write_png("mesh.png", preview(read_mesh("mesh.obj")));
+// Example:
+//   Mesh mesh = mesh_implicit(implicit_sphere(1.0), {Interval(-2, 2), Interval(-2, 2), Interval(-2, 2)},
+//                             {.min_feature = 0.25}).mesh;
+//   Image img = preview(mesh);           // write_png("mesh.png", img) saves it
 #pragma once
 
 #include "genmod/tessellate/image.hpp"

@@ -7,10 +7,11 @@
 // the value of f at its center: kInside (255, white) where f < 0, kOutside (0, black) where
 // f >= 0 or where f is an error (NaN).
 //
-//   Tape tape(load_vm("prospero.vm"));
+// Example:
+//   Tape tape(square(x(0)) + square(x(1)) - 0.5);   // or Tape tape(load_vm("prospero.vm"))
 //   RasterStats stats;
-//   Image img = render_sign(tape, {.size = 1024}, &stats);
-//   write_png("prospero.png", img);
+//   Image img = render_sign(tape, {.size = 256}, &stats);
+//   // write_png("disk.png", img) saves it
 //
 // render_sign subdivides the image into a hierarchy of square tiles: the whole image (level 0),
 // then tiles of tile_sizes[0] pixels (level 1), tile_sizes[1] (level 2), ... Tiles at the

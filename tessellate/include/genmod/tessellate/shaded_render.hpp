@@ -7,9 +7,11 @@
 // from box.z.lo) of the highest voxel whose center has f < 0, or 0 when the ray meets no
 // solid. Voxel centers sit at lo + (k + 0.5) * h on every axis, computed once.
 //
-//   Tape tape(load_vm("tanglecube.vm"));
-//   ShadedImage shot = render_shaded(tape, {.size = 1024, .box = {I(-2.5, 2.5), ...}});
-//   write_png("tanglecube.png", shot.image);
+// Example:
+//   Tape tape(implicit_sphere(2.0));                // or Tape tape(load_vm("tanglecube.vm"))
+//   using I = Interval;
+//   ShadedImage shot = render_shaded(tape, {.size = 128, .box = {I(-2.5, 2.5), I(-2.5, 2.5), I(-2.5, 2.5)}});
+//   // write_png("ball.png", shot.image) saves it
 //
 // render_shaded subdivides the voxel block into cubes of tile_sizes[0], tile_sizes[1], ...
 // voxels. Each cube is evaluated with interval arithmetic over the hull of its voxel centers,

@@ -15,6 +15,9 @@
 //     SurfaceDistance).
 // CGAL lives in this layer's validation translation unit only.
 //
+// Example:
+//   Mesh mesh = mesh_implicit(implicit_sphere(1.0), {Interval(-2, 2), Interval(-2, 2), Interval(-2, 2)},
+//                             {.min_feature = 0.25}).mesh;
 //   MeshValidity v = validate(mesh);
 //   if (!v.valid()) std::cerr << describe(v);
 #pragma once

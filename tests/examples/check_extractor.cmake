@@ -1,0 +1,30 @@
+# Runs the extractor on OUTPUT / HEADERS and checks that each block of EXPECT occurs in the
+# generated source (the TEST names and the unprefixed code).
+execute_process(COMMAND ${CMAKE_COMMAND} -DOUTPUT=${OUTPUT} -DHEADERS=${HEADERS}
+  -P ${CMAKE_CURRENT_LIST_DIR}/../../cmake/ExtractHeaderExamples.cmake RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the extractor failed on ${HEADERS}")
+endif()
+file(READ ${OUTPUT} generated)
+# EXPECT holds blocks of expected text separated by a line `----`; each block must occur
+# verbatim (read whole: a CMake list of lines would split at semicolons and brackets).
+file(READ ${EXPECT} expected_text)
+while(NOT expected_text STREQUAL "")
+  string(FIND "${expected_text}" "----\n" sep)
+  if(sep EQUAL -1)
+    set(block "${expected_text}")
+    set(expected_text "")
+  else()
+    string(SUBSTRING "${expected_text}" 0 ${sep} block)
+    math(EXPR next "${sep} + 5")
+    string(SUBSTRING "${expected_text}" ${next} -1 expected_text)
+  endif()
+  string(FIND "${generated}" "${block}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "the generated source lacks\n${block}\nin\n${generated}")
+  endif()
+endwhile()
+string(FIND "${generated}" "not code" at)
+if(NOT at EQUAL -1)
+  message(FATAL_ERROR "prose after the example's end was extracted:\n${generated}")
+endif()
