@@ -76,6 +76,7 @@ std::string_view limit_name(LimitHit hit) noexcept {
     case LimitHit::MaxBoxes: return "max_boxes";
     case LimitHit::MaxDepth: return "max_depth";
     case LimitHit::TimeLimit: return "time_limit";
+    case LimitHit::Cancelled: return "cancelled";
   }
   return "?";
 }

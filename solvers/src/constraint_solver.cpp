@@ -398,6 +398,10 @@ SolveResult solve(const Fn& constraint, std::span<const int> unknowns, const Box
       rep.limit = LimitHit::TimeLimit;
       break;
     }
+    if (lim.cancelled()) {
+      rep.limit = LimitHit::Cancelled;
+      break;
+    }
     if (rep.boxes_processed >= lim.max_boxes) {
       rep.limit = LimitHit::MaxBoxes;
       break;

@@ -84,6 +84,7 @@ class CurveBuilder {
     point_opt_.threads = 1;
     point_opt_.limits.max_boxes = 20000;
     point_opt_.limits.max_depth = 200;
+    point_opt_.limits.cancel = opt.limits.cancel;
     periodic_.assign(n_, false);
     newton_.resize(n_);
     for (int p : opt.periodic) {
@@ -137,6 +138,8 @@ bool CurveBuilder::limit_reached() {
   else if (opt_.limits.time_limit > 0 &&
            std::chrono::duration<double>(Clock::now() - start_).count() > opt_.limits.time_limit)
     hit = LimitHit::TimeLimit;
+  else if (opt_.limits.cancelled())
+    hit = LimitHit::Cancelled;
   if (hit == LimitHit::None) return false;
   if (r.limit == LimitHit::None) r.limit = hit;
   return true;

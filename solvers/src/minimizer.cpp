@@ -365,6 +365,10 @@ bool Search::limit_reached() {
     if (r.limit == LimitHit::None) r.limit = LimitHit::MaxBoxes;
     return true;
   }
+  if (opt_.limits.cancelled()) {
+    if (r.limit == LimitHit::None) r.limit = LimitHit::Cancelled;
+    return true;
+  }
   if (opt_.limits.time_limit > 0.0 && (r.boxes_processed % 16 == 0)) {
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if (s >= opt_.limits.time_limit) {

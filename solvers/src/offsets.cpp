@@ -55,6 +55,7 @@ class OffsetSearch {
       LimitHit hit = LimitHit::None;
       if (out.report.boxes_processed >= options_.limits.max_boxes) hit = LimitHit::MaxBoxes;
       else if (options_.limits.time_limit > 0.0 && elapsed > options_.limits.time_limit) hit = LimitHit::TimeLimit;
+      else if (options_.limits.cancelled()) hit = LimitHit::Cancelled;
       if (hit != LimitHit::None) {
         out.report.limit = hit;
         for (Pending& p : work) out.boxes.push_back({std::move(p.box), OffsetBoxStatus::Boundary});

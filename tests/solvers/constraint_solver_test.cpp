@@ -5,7 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <limits>
+#include <thread>
 #include <numbers>
 #include <random>
 
@@ -216,6 +220,41 @@ TEST(ConstraintSolver, LimitsAreReported) {
   r = solve(eq(sin(X * Y), 0.1), kU, kSquare, o);
   EXPECT_EQ(r.report.limit, LimitHit::TimeLimit);
   EXPECT_FALSE(r.complete());
+}
+
+// A caller's stop request (SearchLimits::cancel, what Python's Ctrl-C sets) stops the search
+// at its next round, reported as Cancelled, with every solution still covered.
+TEST(ConstraintSolver, CancellationStopsTheSearchAndKeepsEverySolution) {
+  const Fn circle = eq(square(X) + square(Y), 1.0);
+  std::atomic<bool> stop{true};
+  SolveOptions o = plain(1e-6);
+  o.limits.cancel = &stop;
+  SolveResult r = solve(circle, kU, kSquare, o);
+  EXPECT_EQ(r.report.limit, LimitHit::Cancelled);
+  EXPECT_EQ(limit_name(r.report.limit), "cancelled");
+  EXPECT_FALSE(r.complete());
+  for (int i = 0; i < 360; ++i) {
+    const double t = 2 * std::numbers::pi * i / 360;
+    EXPECT_TRUE(covered(r, {std::cos(t), std::sin(t)}, 1e-15));
+  }
+  // Set from another thread while a long search runs (one that would take minutes).
+  stop = false;
+  o = plain(1e-12);
+  o.limits.max_boxes = std::numeric_limits<std::size_t>::max();
+  o.limits.time_limit = 600;
+  o.limits.cancel = &stop;
+  std::thread canceller([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    stop = true;
+  });
+  r = solve(circle, kU, kSquare, o);
+  canceller.join();
+  EXPECT_EQ(r.report.limit, LimitHit::Cancelled);
+  EXPECT_LT(r.report.seconds, 60.0);
+  for (int i = 0; i < 360; ++i) {
+    const double t = 2 * std::numbers::pi * i / 360;
+    EXPECT_TRUE(covered(r, {std::cos(t), std::sin(t)}, 1e-15));
+  }
 }
 
 // Issue 10, failure 5: a box that max_depth stopped from being split was not accepted (it is

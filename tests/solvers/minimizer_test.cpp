@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -199,6 +201,15 @@ TEST(Minimizer, LimitsAreReportedAndBoundsStaySound) {
   r = minimize(camel, Fn(1.0), kXY, box, time);
   EXPECT_EQ(r.report.limit, LimitHit::TimeLimit);
   EXPECT_TRUE(r.minimum.contains(f_star));
+
+  const std::atomic<bool> stop{true};
+  MinimizeOptions cancelled;
+  cancelled.limits.cancel = &stop;
+  r = minimize(camel, Fn(1.0), kXY, box, cancelled);
+  EXPECT_EQ(r.report.limit, LimitHit::Cancelled);
+  EXPECT_TRUE(r.minimum.contains(f_star));
+  EXPECT_TRUE(covered(r, m1, 1e-9));
+  EXPECT_TRUE(covered(r, m2, 1e-9));
 }
 
 TEST(Minimizer, InfeasibleProblemIsProven) {

@@ -2,6 +2,7 @@
 // Every search stops at its limits and says which one it hit; nothing is dropped silently.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -12,9 +13,15 @@ struct SearchLimits {
   std::size_t max_boxes = 1'000'000;  // boxes taken from the work list
   int max_depth = 200;                // subdivisions along one path
   double time_limit = 0.0;            // seconds of wall time; 0 = none
+  // The caller's stop request (not owned; null = none): when it becomes true the search stops
+  // at its next box (or round of boxes) and reports LimitHit::Cancelled, with what it has
+  // left unexplored, as for the other limits. Python's Ctrl-C sets it.
+  const std::atomic<bool>* cancel = nullptr;
+
+  bool cancelled() const noexcept { return cancel != nullptr && cancel->load(std::memory_order_relaxed); }
 };
 
-enum class LimitHit : std::uint8_t { None, MaxBoxes, MaxDepth, TimeLimit };
+enum class LimitHit : std::uint8_t { None, MaxBoxes, MaxDepth, TimeLimit, Cancelled };
 
 std::string_view limit_name(LimitHit hit) noexcept;
 
