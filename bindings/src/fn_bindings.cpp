@@ -88,6 +88,13 @@ are NaN at points and flagged in bounds.)doc");
 
   m.def("load_vm", [](const std::string& path) { return load_vm(path); }, py::arg("path"),
         "Reads a .vm model file (x, y, z are x(0), x(1), x(2)); ValueError names the line of a malformed file.");
+  m.def("save_vm", [](const Fn& f, const std::string& path) { save_vm(path, f); }, py::arg("f"), py::arg("path"),
+        "Writes a scalar function as a .vm model file (x(i) as var-N; ValueError for a vector or a custom operator).");
+  fn.def("to_vm", [](const Fn& f) {
+    std::ostringstream os;
+    write_vm(os, f);
+    return os.str();
+  }, "The scalar function as .vm text (what save_vm writes).");
   m.def("live_nodes", &dag::size, "The number of live expression nodes (the store reclaims what nothing holds).");
   m.def("live_custom_operators", &dag::custom_count, "The number of live custom operators.");
   m.def("x", &x, py::arg("i"), "The parametric coordinate x(i), 0 <= i < 64.");

@@ -8,6 +8,8 @@ PYBIND11_MODULE(_genmod, m) {
   m.doc() = "genmod: generative modeling with interval arithmetic (the compiled core)";
   genmod::python::bind_fn(m);
   genmod::python::bind_evaluation(m);
+  genmod::python::bind_operators(m);
+  genmod::python::bind_solvers(m);
   genmod::python::bind_mesh(m);
   genmod::python::bind_gallery(m);
   genmod::python::bind_batch(m);

@@ -1,6 +1,7 @@
 // numpy in and out: an Fn or a compiled Tape evaluated on an (N, n) array of points (column k is
 // the coordinate x(k)) to (N, m) with the batch evaluator (no per-point Python work, the GIL
 // released), and bounded over a box given as an (n, 2) array of [lo, hi] rows.
+#include "arrays.hpp"
 #include "bindings.hpp"
 
 #include "genmod/kernel/batch_evaluator.hpp"
@@ -19,7 +20,7 @@ namespace py = pybind11;
 namespace genmod::python {
 namespace {
 
-using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Array = DoubleArray;
 
 // A tape over the coordinates x(0) .. x(columns - 1), in that order.
 struct ColumnTape {
@@ -81,26 +82,12 @@ py::array evaluate(const ColumnTape& t, const Array& points) {
 }
 
 py::array bound(const ColumnTape& t, const Array& box) {
-  if (box.ndim() != 2 || box.shape(1) != 2)
-    throw std::invalid_argument("genmod: a box must be an array of shape (n, 2) of [lo, hi] rows");
-  const std::size_t n = static_cast<std::size_t>(box.shape(0));
-  if (n != t.columns)
-    throw std::invalid_argument("genmod: the box has " + std::to_string(n) + " rows, the tape " + std::to_string(t.columns));
-  std::vector<Interval> b;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double lo = box.at(k, 0), hi = box.at(k, 1);
-    if (!(lo <= hi))
-      throw std::invalid_argument("genmod: box row " + std::to_string(k) + " is not an interval lo <= hi");
-    b.emplace_back(lo, hi);
-  }
+  const std::vector<Interval> b = box_from_array(box, "genmod: a box");
+  if (b.size() != t.columns)
+    throw std::invalid_argument("genmod: the box has " + std::to_string(b.size()) + " rows, the tape " +
+                                std::to_string(t.columns));
   IntervalEvaluator ev;
-  const std::span<const Interval> y = ev.eval(t.tape, b);
-  py::array_t<double> result({static_cast<py::ssize_t>(y.size()), py::ssize_t{2}});
-  for (std::size_t j = 0; j < y.size(); ++j) {
-    result.mutable_at(j, 0) = y[j].lo();
-    result.mutable_at(j, 1) = y[j].hi();
-  }
-  return result;
+  return to_array(ev.eval(t.tape, b));
 }
 
 }  // namespace

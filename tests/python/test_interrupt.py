@@ -1,0 +1,51 @@
+"""Ctrl-C from Python stops a long C++ search: the call raises KeyboardInterrupt soon after the
+signal, returns nothing half-done, and the module works normally afterwards."""
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import genmod as gm
+
+BOX = np.array([[-2.0, 2.0], [-2.0, 2.0]])
+CIRCLE = gm.x(0) ** 2 + gm.x(1) ** 2 == 1.0
+
+
+def interrupted_after(seconds, call):
+    """Runs call() with a SIGINT sent to this process after `seconds`; returns the time taken
+    until KeyboardInterrupt came out of it."""
+    timer = threading.Timer(seconds, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            call()
+    finally:
+        timer.cancel()
+        timer.join()
+    return time.monotonic() - start
+
+
+def test_ctrl_c_stops_a_long_solve():
+    # With epsilon 1e-13 the circle needs ~10^14 boxes: hours, unless interrupted.
+    elapsed = interrupted_after(0.3, lambda: gm.solve(CIRCLE, [0, 1], BOX, epsilon=1e-13, max_boxes=10 ** 18,
+                                                      time_limit=300))
+    assert elapsed < 10
+    after = gm.solve(CIRCLE & (gm.x(0) == gm.x(1)), [0, 1], BOX, epsilon=1e-9)
+    assert after.complete and after.unique_components == 2
+
+
+def test_ctrl_c_stops_a_long_minimization():
+    # The minimizers fill a patch of the sphere |(x0, x1, x2)| = 0.7 (x3 = 0): with epsilon
+    # 1e-14 the candidates would never end.
+    X = [gm.x(i) for i in range(4)]
+    objective = X[0] ** 2 + X[1] ** 2 + X[2] ** 2 + X[3] ** 2
+    constraint = X[0] ** 2 + X[1] ** 2 + X[2] ** 2 >= 0.49
+    box = np.array([[0.0, 1.0]] * 4)
+    elapsed = interrupted_after(0.3, lambda: gm.minimize(objective, [0, 1, 2, 3], box, constraint=constraint,
+                                                         epsilon=1e-14, delta=1e-300, max_boxes=10 ** 18,
+                                                         time_limit=300))
+    assert elapsed < 10
