@@ -86,8 +86,10 @@ are NaN at points and flagged in bounds.)doc");
   py::implicitly_convertible<double, Fn>();
   py::implicitly_convertible<int, Fn>();
 
+  // A malformed or unreadable model file: a ValueError (genmod.VmFormatError) naming the line.
+  py::register_exception<VmFormatError>(m, "VmFormatError", PyExc_ValueError);
   m.def("load_vm", [](const std::string& path) { return load_vm(path); }, py::arg("path"),
-        "Reads a .vm model file (x, y, z are x(0), x(1), x(2)); ValueError names the line of a malformed file.");
+        "Reads a .vm model file (x, y, z are x(0), x(1), x(2)); genmod.VmFormatError (a ValueError) names the line of a malformed file.");
   m.def("save_vm", [](const Fn& f, const std::string& path) { save_vm(path, f); }, py::arg("f"), py::arg("path"),
         "Writes a scalar function as a .vm model file (x(i) as var-N; ValueError for a vector or a custom operator).");
   fn.def("to_vm", [](const Fn& f) {
