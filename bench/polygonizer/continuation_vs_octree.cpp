@@ -8,17 +8,22 @@
 //    start on the surface; triangles, evaluations of f (corners + bisections + normals + seed
 //    search, counted), CPU time;
 //  - octree, uniform: mesh_implicit with min_feature = max_cell = h (every surface cell of
-//    edge h), one thread; triangles, interval cell classifications (its point evaluations
-//    are not counted by the mesher), CPU time;
+//    edge h), one thread; triangles, point and interval evaluations of f, CPU time;
 //  - octree, adaptive: the same with the default max_cell (cells grow where the surface is
 //    flat), min_feature = h.
-// Ratios are octree / continuation (tetrahedra), measured in this run. Every mesh is
+// Evaluations are counted in one extra, untimed run of each mesher on f wrapped in a counting
+// identity operator (counting_op.hpp): point evaluations ("pts") and interval evaluations
+// ("boxes") of f's value tape; mesh_implicit's gradient and Hessian tapes are not counted. For
+// the continuation polygonizer the wrapped count is checked against its own stats.
+// The ratio columns divide each row's triangles, evaluations (points + boxes) and CPU time by
+// those of the continuation (tetrahedra) row of the same shape and h, all from this run. Every mesh is
 // validated outside the timing (valid = closed, manifold, outward, no self-intersections) with
 // its largest certified vertex distance. CPU time is process CPU time, the median of the
 // repeats (the machine is shared).
 //
 // --previews DIR writes each continuation mesh (tetrahedra, finest h) of the test shapes to
 // DIR/<shape>.obj and a shaded picture DIR/<shape>.png.
+#include "counting_op.hpp"
 #include "genmod/kernel/vm_format.hpp"
 #include "genmod/models/starfish.hpp"
 #include "genmod/operators/shapes.hpp"
@@ -35,6 +40,7 @@
 #include <ctime>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -102,9 +108,8 @@ int main(int argc, char** argv) {
       {"starfish", models::starfish_implicit(), 1.0, {{0.0, 0.0, 0.1}}, false},
   };
   const int xyz[3] = {0, 1, 2};
-  std::printf("%-11s %8s | %-28s %9s %9s %8s | %9s %8s | %-22s %9s %9s %8s | %9s %9s %8s | %7s %7s %7s\n", "shape", "h",
-              "continuation (tetrahedra)", "tris", "evals", "cpu s", "cube tris", "cpu s", "octree, uniform cells", "tris",
-              "intervals", "cpu s", "adapt tris", "intervals", "cpu s", "tris x", "cpu x", "adapt x");
+  std::printf("%-11s %8s  %-22s %-26s %9s %10s %9s %8s %8s %8s %8s\n", "shape", "h", "mesher", "validate", "triangles",
+              "f points", "f boxes", "cpu s", "tris x", "evals x", "cpu x");
   for (const Shape& shape : shapes) {
     if (!shape.in_comparison) continue;
     const Tape tape(shape.f, xyz);
@@ -112,26 +117,50 @@ int main(int argc, char** argv) {
     const Box3 box{Interval(-shape.half, shape.half), Interval(-shape.half, shape.half), Interval(-shape.half, shape.half)};
     for (int k : {5, 6, 7}) {
       const double h = 2 * shape.half / (1 << k);
-      ContinuationSettings cs{.cube_size = h, .starts = shape.starts};
-      if (shape.starts.empty()) cs.bounds = box;
-      ContinuationMesh tet, cube;
-      const double t_tet = median_cpu(repeats, [&] { tet = polygonize_continuation(tape, cs); });
-      ContinuationSettings cc = cs;
-      cc.decomposition = CellDecomposition::cubes;
-      const double t_cube = median_cpu(repeats, [&] { cube = polygonize_continuation(tape, cc); });
-      ImplicitMesh uni, ada;
-      const double t_uni = median_cpu(
-          repeats, [&] { uni = mesh_implicit(surface, box, {.min_feature = h, .max_cell = h, .threads = 1}); });
-      const double t_ada = median_cpu(repeats, [&] { ada = mesh_implicit(surface, box, {.min_feature = h, .threads = 1}); });
-      std::printf("%-11s %8.5f | %-28s %9zu %9zu %8.3f | %9zu %8.3f | %-22s %9zu %9zu %8.3f | %9zu %9zu %8.3f | %7.2f %7.2f %7.2f\n",
-                  shape.name.c_str(), h, check(tet.mesh, tape, h).c_str(), tet.mesh.triangles.size(),
-                  tet.stats.evaluations(), t_tet, cube.mesh.triangles.size(), t_cube, check(uni.mesh, tape, h).c_str(),
-                  uni.mesh.triangles.size(), uni.stats.interval_evaluations, t_uni, ada.mesh.triangles.size(),
-                  ada.stats.interval_evaluations, t_ada,
-                  static_cast<double>(uni.mesh.triangles.size()) / static_cast<double>(tet.mesh.triangles.size()),
-                  t_uni / t_tet, t_ada / t_tet);
-      std::printf("%-11s %8s   cubes: %s\n", "", "", check(cube.mesh, tape, h).c_str());
-      std::fflush(stdout);
+      ContinuationSettings tets{.cube_size = h, .starts = shape.starts};
+      if (shape.starts.empty()) tets.bounds = box;
+      ContinuationSettings cubes = tets;
+      cubes.decomposition = CellDecomposition::cubes;
+      const ImplicitMeshSettings uniform{.min_feature = h, .max_cell = h, .threads = 1};
+      const ImplicitMeshSettings adaptive{.min_feature = h, .threads = 1};
+
+      struct Row {
+        const char* mesher;
+        std::function<Mesh(const Fn&)> run;  // the mesher on f (counted) or on the plain shape (timed)
+        std::function<Mesh()> run_timed;
+      };
+      const Row rows[4] = {
+          {"continuation, tets", [&](const Fn& g) { return polygonize_continuation(g, tets).mesh; },
+           [&] { return polygonize_continuation(tape, tets).mesh; }},
+          {"continuation, cubes", [&](const Fn& g) { return polygonize_continuation(g, cubes).mesh; },
+           [&] { return polygonize_continuation(tape, cubes).mesh; }},
+          {"octree, uniform cells", [&](const Fn& g) { return mesh_implicit(g, box, uniform).mesh; },
+           [&] { return mesh_implicit(surface, box, uniform).mesh; }},
+          {"octree, adaptive", [&](const Fn& g) { return mesh_implicit(g, box, adaptive).mesh; },
+           [&] { return mesh_implicit(surface, box, adaptive).mesh; }},
+      };
+      double base_tris = 0, base_evals = 0, base_cpu = 0;
+      for (const Row& row : rows) {
+        Mesh mesh;
+        const double cpu = median_cpu(repeats, [&] { mesh = row.run_timed(); });
+        const auto counter = std::make_shared<bench::CountingOp>();
+        const Mesh counted_mesh = row.run(bench::counted(shape.f, counter));
+        const double points = static_cast<double>(counter->points.load());
+        const double boxes = static_cast<double>(counter->boxes.load());
+        if (counted_mesh.triangles != mesh.triangles) std::printf("  (the counted run gave another mesh)\n");
+        const double tris = static_cast<double>(mesh.triangles.size());
+        if (base_tris == 0) base_tris = tris, base_evals = points + boxes, base_cpu = cpu;
+        std::printf("%-11s %8.5f  %-22s %-26s %9zu %10.0f %9.0f %8.3f %8.2f %8.2f %8.2f\n", shape.name.c_str(), h,
+                    row.mesher, check(mesh, tape, h).c_str(), mesh.triangles.size(), points, boxes, cpu, tris / base_tris,
+                    (points + boxes) / base_evals, cpu / base_cpu);
+        std::fflush(stdout);
+      }
+      // The continuation polygonizer's own count agrees with the counted run.
+      const ContinuationMesh own = polygonize_continuation(tape, tets);
+      const auto counter = std::make_shared<bench::CountingOp>();
+      polygonize_continuation(bench::counted(shape.f, counter), tets);
+      if (own.stats.evaluations() != counter->points.load())
+        std::printf("  (stats.evaluations() = %zu, counted %zu)\n", own.stats.evaluations(), counter->points.load());
     }
   }
   if (!previews.empty()) {
