@@ -118,6 +118,20 @@ TEST(ContinuationPolygonizer, Claim29Normals) {
     worst = std::max(worst, std::acos(std::min(1.0, cosine)) * 180 / M_PI);
   }
   EXPECT_LT(worst, 0.1);
+  // A density field (positive inside, Gaussian 2^-|p|^2 at iso 1/2, the unit sphere) wrapped
+  // to f = 1/2 - D: Unit(D(p) - D(p + delta e_i)) is the normal computed, and points outward.
+  const ContinuationMesh g =
+      polygonize_continuation(0.5 - exp(-M_LN2 * (square(X) + square(Y) + square(Z))), {.cube_size = size, .starts = {{R, 0, 0}}});
+  ASSERT_GT(g.normals.size(), 100u);
+  double worst_density = 0;
+  for (std::size_t i = 0; i < g.normals.size(); ++i) {
+    const auto& v = g.mesh.vertices[i];
+    const auto& n = g.normals[i];
+    const double cosine = (n[0] * v[0] + n[1] * v[1] + n[2] * v[2]) / std::hypot(v[0], v[1], v[2]);
+    EXPECT_GT(cosine, 0.0);
+    worst_density = std::max(worst_density, std::acos(std::min(1.0, cosine)) * 180 / M_PI);
+  }
+  EXPECT_LT(worst_density, 0.1);
   // Off: no normals, and four evaluations fewer per vertex.
   ContinuationSettings off{.cube_size = size, .starts = {{R, 0, 0}}, .normals = false};
   const ContinuationMesh m2 = polygonize_continuation(sphere(R), off);
