@@ -3,6 +3,7 @@
 // meshes of a sphere and a torus under validate(), one component per start, bitwise
 // determinism, limits and rejected input.
 #include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/kernel/vm_format.hpp"
 #include "genmod/operators/shapes.hpp"
 #include "genmod/tessellate/continuation_polygonizer.hpp"
 #include "genmod/tessellate/validate.hpp"
@@ -307,6 +308,15 @@ TEST(ContinuationPolygonizer, TorusIsClosedWithEulerCharacteristicZero) {
   const Checked c = polygonize_and_check(torus(), {.cube_size = 0.03, .starts = {{0.0, 0.7, 0.0}}});
   SCOPED_TRACE(summary(c));
   expect_closed_manifold(c, 0);
+}
+
+TEST(ContinuationPolygonizer, TanglecubeHasGenusFive) {
+  // Found without a start point (the surface crosses no axis), meshed whole from one seed.
+  const Fn f = load_vm(std::string(GENMOD_DATA_DIR) + "/tanglecube.vm");
+  const Checked c =
+      polygonize_and_check(f, {.cube_size = 0.1, .bounds = Box3{Interval(-2.5, 2.5), Interval(-2.5, 2.5), Interval(-2.5, 2.5)}});
+  SCOPED_TRACE(summary(c));
+  expect_closed_manifold(c, -8);  // 2 - 2 * 5
 }
 
 TEST(ContinuationPolygonizer, SeedIsFoundInTheBoundsWithoutAStart) {
