@@ -351,6 +351,12 @@ TEST(ContinuationPolygonizer, CubeLimitIsReported) {
   ASSERT_EQ(m.stats.limits_hit, std::vector<std::string>{"cubes"});
   const MeshValidity v = validate(m.mesh, {.check_self_intersections = false});
   EXPECT_GT(v.boundary_edges, 0u);  // cut where the limit stopped it
+  // A second start after the limit adds nothing and is no error.
+  const ContinuationMesh two = polygonize_continuation(
+      two_spheres(), {.cube_size = 0.05, .starts = {{-1, 0, 0}, {1, 0, 0}}, .max_cubes = 100});
+  EXPECT_EQ(two.stats.cubes, 100u);
+  EXPECT_EQ(two.stats.seeds.size(), 1u);
+  EXPECT_EQ(two.stats.limits_hit, std::vector<std::string>{"cubes"});
   // Cut anywhere, its vertices may touch in a point; the edges stay manifold and oriented.
   EXPECT_EQ(v.nonmanifold_edges, 0u);
   EXPECT_TRUE(v.oriented());

@@ -193,6 +193,10 @@ class Polygonizer {
   // Starts a continuation at the seed's cube, or at the first cube around it that straddles
   // the surface.
   void start_from(const Point& seed) {
+    if (visited_.size() >= s_.max_cubes) {  // no room for another piece: the limit, not an error
+      limit_[kCubes] = true;
+      return;
+    }
     Cell home;
     for (int k = 0; k < 3; ++k)
       home[k] = static_cast<std::int64_t>(std::floor((seed[k] - origin_[k]) / s_.cube_size));
