@@ -155,7 +155,11 @@ const Command kMeshCommand{
     "                 the octree and its pruned tapes, default 8192 MB)\n"
     "  --threads N      worker threads (default: all cores)\n"
     "  --no-sharp       no feature points (smooth placement only)\n"
-    "  --no-check       skip the validity report (exit status 1 when the mesh is not valid)\n",
+    "  --no-check       skip the validity report (exit status 1 when the mesh is not valid)\n"
+    "  --continuation H Bloomenthal's continuation polygonizer with cubes of edge H instead: only the\n"
+    "                 piece of surface reached from --start x,y,z (default: a seed searched in the box),\n"
+    "                 cubes outside the box not visited, --max-cells N cubes at most; --cubes uses the\n"
+    "                 cube table instead of six tetrahedra per cube\n",
     run_mesh};
 
 }  // namespace genmod::app

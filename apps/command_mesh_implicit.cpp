@@ -1,4 +1,5 @@
-// genmod mesh MODEL.vm ...: an implicit model (solid where f < 0) meshed by mesh_implicit.
+// genmod mesh MODEL.vm ...: an implicit model (solid where f < 0) meshed by mesh_implicit, or
+// with --continuation H by Bloomenthal's continuation polygonizer (the classic baseline).
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "model_file.hpp"
@@ -6,6 +7,7 @@
 #include "progress_bar.hpp"
 
 #include "genmod/models/implicit_gallery.hpp"
+#include "genmod/tessellate/continuation_polygonizer.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/mesh.hpp"
 #include "genmod/tessellate/validate.hpp"
@@ -17,6 +19,56 @@
 #include <vector>
 
 namespace genmod::app {
+
+namespace {
+
+// "x,y,z": three finite numbers.
+std::array<double, 3> parse_point(const std::string& option, const std::string& text) {
+  std::vector<double> v;
+  for (std::size_t begin = 0; begin <= text.size();) {
+    const std::size_t end = std::min(text.find(',', begin), text.size());
+    v.push_back(parse_number(option, text.substr(begin, end - begin)));
+    begin = end + 1;
+  }
+  if (v.size() != 3) throw UsageError(option + " expects x,y,z (3 numbers), got '" + text + "'");
+  return {v[0], v[1], v[2]};
+}
+
+// The --continuation path: the piece of surface reached from the start point (or from a seed
+// found in the box), cubes of edge H, cubes whose centre is outside the box not visited.
+int run_continuation(const Arguments& a, const std::string& path, const Fn& f, const Box3& box,
+                     const std::string& output) {
+  ContinuationSettings s;
+  s.cube_size = positive_option(a, {"--continuation"}, 0.0, false);
+  if (const auto start = a.value({"--start"})) s.starts.push_back(parse_point("--start", *start));
+  s.bounds = box;
+  s.decomposition = a.has("--cubes") ? CellDecomposition::cubes : CellDecomposition::tetrahedra;
+  s.max_cubes = static_cast<std::size_t>(positive_option(a, {"--max-cells"}, static_cast<double>(s.max_cubes), false));
+  const auto t0 = std::chrono::steady_clock::now();
+  ContinuationMesh result;
+  try {
+    result = polygonize_continuation(f, s);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  write_mesh(result.mesh, output);
+  const ContinuationStats& st = result.stats;
+  std::printf("%s: %zu vertices, %zu triangles in %.3f s -> %s\n", path.c_str(), result.mesh.vertices.size(),
+              result.mesh.triangles.size(), seconds, output.c_str());
+  std::printf("continuation (%s): %zu cubes, %zu evaluations of f (%zu corners, %zu bisections, %zu normals, %zu search); "
+              "vertex error <= %.3g\n",
+              s.decomposition == CellDecomposition::cubes ? "cube table" : "tetrahedra", st.cubes, st.evaluations(),
+              st.corner_evaluations, st.bisection_evaluations, st.normal_evaluations, st.search_evaluations,
+              0.5 * st.max_bracket);
+  for (const std::string& limit : st.limits_hit) std::printf("limit reached: %s\n", limit.c_str());
+  if (a.has("--no-check")) return 0;
+  const MeshValidity v = validate(read_mesh(output));
+  std::printf("%s", describe(v).c_str());
+  return v.valid() ? 0 : 1;
+}
+
+}  // namespace
 
 int run_mesh_implicit(std::span<const std::string> args) {
   // --param may repeat: take every occurrence out before the generic scanner sees the rest.
@@ -35,10 +87,10 @@ int run_mesh_implicit(std::span<const std::string> args) {
       rest.push_back(args[i]);
     }
   }
-  static constexpr std::array<const char*, 2> kFlags{"--no-sharp", "--no-check"};
-  static constexpr std::array<const char*, 10> kValued{"--box",       "--min-feature", "--tolerance",  "--max-cell",
+  static constexpr std::array<const char*, 3> kFlags{"--no-sharp", "--no-check", "--cubes"};
+  static constexpr std::array<const char*, 12> kValued{"--box",       "--min-feature", "--tolerance",  "--max-cell",
                                                        "--max-seconds", "--threads",   "-o",           "--output",
-                                                       "--max-cells",   "--max-memory"};
+                                                       "--max-cells",   "--max-memory", "--continuation", "--start"};
   const Arguments a(rest, kFlags, kValued);
   if (a.positional().size() != 1)
     throw UsageError("expected one model, got " + std::to_string(a.positional().size()) + " arguments");
@@ -46,7 +98,11 @@ int run_mesh_implicit(std::span<const std::string> args) {
   const models::ImplicitModel* model = models::find_implicit_model(path);
   const std::optional<std::string> output = a.value({"-o", "--output"});
   if (!output) throw UsageError("missing output file (-o FILE)");
-  if (!model && !a.value({"--min-feature"})) throw UsageError("missing --min-feature H (the smallest cell edge)");
+  const bool continuation = a.value({"--continuation"}).has_value();
+  if (!continuation && (a.value({"--start"}) || a.has("--cubes")))
+    throw UsageError("--start and --cubes belong to --continuation H");
+  if (!model && !continuation && !a.value({"--min-feature"}))
+    throw UsageError("missing --min-feature H (the smallest cell edge)");
   ImplicitMeshSettings s;
   s.min_feature = positive_option(a, {"--min-feature"}, model ? model->min_feature : 0.0, false);
   s.tolerance = positive_option(a, {"--tolerance"}, 0, true);
@@ -64,6 +120,7 @@ int run_mesh_implicit(std::span<const std::string> args) {
   check_writable(*output);
 
   const Fn f = load_implicit_model(path, overrides);
+  if (continuation) return run_continuation(a, path, f, box, *output);
   const auto start = std::chrono::steady_clock::now();
   ImplicitMesh result;
   try {

@@ -1,8 +1,10 @@
 // Meshes in Python: vertex (V, 3) and triangle (F, 3) numpy arrays, files, the validator's
-// report, previews (Mesh._repr_png_ shows a mesh in a notebook), and the implicit mesher.
+// report, previews (Mesh._repr_png_ shows a mesh in a notebook), the implicit mesher and the
+// continuation polygonizer.
 #include "bindings.hpp"
 
 #include "genmod/kernel/fn.hpp"
+#include "genmod/tessellate/continuation_polygonizer.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/mesh_io.hpp"
 #include "genmod/tessellate/png_io.hpp"
@@ -147,6 +149,46 @@ mesh.png() a shaded preview (a notebook shows a mesh through _repr_png_).)doc")
       R"doc(Meshes the solid {f < 0} inside box (shape (3, 2)): closed, manifold and intersection-free.
 
 Returns (mesh, stats); stats names the limits hit (the mesh is then coarser, still valid).)doc");
+
+  m.def("polygonize_continuation", [](const Fn& f, double cube_size, const py::object& starts, const py::object& box,
+                                      bool cubes, int bisections, std::size_t max_cubes) {
+        ContinuationSettings s;
+        s.cube_size = cube_size;
+        if (!starts.is_none()) {
+          const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(starts);
+          if (!a || a.ndim() != 2 || a.shape(1) != 3)
+            throw std::invalid_argument("genmod: polygonize_continuation: starts must have shape (N, 3)");
+          for (py::ssize_t i = 0; i < a.shape(0); ++i) s.starts.push_back({a.at(i, 0), a.at(i, 1), a.at(i, 2)});
+        }
+        if (!box.is_none()) s.bounds = box_from(box.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>());
+        s.decomposition = cubes ? CellDecomposition::cubes : CellDecomposition::tetrahedra;
+        s.bisections = bisections;
+        s.max_cubes = max_cubes;
+        ContinuationMesh result;
+        {
+          py::gil_scoped_release unlocked;
+          result = polygonize_continuation(f, s);
+        }
+        py::array_t<double> normals({static_cast<py::ssize_t>(result.normals.size()), py::ssize_t{3}});
+        double* p = normals.mutable_data();
+        for (const auto& n : result.normals) p = std::copy(n.begin(), n.end(), p);
+        py::dict stats;
+        stats["cubes"] = result.stats.cubes;
+        stats["evaluations"] = result.stats.evaluations();
+        stats["max_vertex_error"] = 0.5 * result.stats.max_bracket;
+        stats["seeds"] = result.stats.seeds;
+        stats["limits_hit"] = result.stats.limits_hit;
+        stats["normals"] = normals;
+        return py::make_tuple(result.mesh, stats);
+      }, py::arg("f"), py::arg("cube_size"), py::arg("starts") = py::none(), py::arg("box") = py::none(),
+      py::arg("cubes") = false, py::arg("bisections") = 10, py::arg("max_cubes") = std::size_t{10'000'000},
+      R"doc(Bloomenthal's continuation polygonizer: the pieces of the surface f = 0 reached from the
+start points (shape (N, 3); default: a seed searched in box), cubes of edge cube_size, only cubes
+whose centre is in box (shape (3, 2)) visited. cubes=True uses the cube table instead of six
+tetrahedra per cube.
+
+Returns (mesh, stats); stats has the cubes visited, evaluations of f, the vertex error bound,
+the seeds, the limits hit and the per-vertex normals (V, 3).)doc");
 }
 
 }  // namespace genmod::python

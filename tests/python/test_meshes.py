@@ -55,3 +55,20 @@ def test_meshes_from_arrays_are_checked():
         gm.Mesh(v, np.array([[0, 1, 7]]))
     with pytest.raises(RuntimeError):
         gm.Mesh(v, t).write("/nonexistent-dir/x.obj")
+
+
+def test_continuation_polygonizer_meshes_the_piece_of_the_start():
+    x, y, z = gm.x(0), gm.x(1), gm.x(2)
+    two = gm.min(gm.sqrt((x + 2.0) ** 2 + y ** 2 + z ** 2), gm.sqrt((x - 2.0) ** 2 + y ** 2 + z ** 2)) - 1.0
+    mesh, stats = gm.polygonize_continuation(two, 0.1, starts=np.array([[-1.0, 0.0, 0.0]]))
+    report = mesh.validate()
+    assert report["valid"], report["description"]
+    assert report["euler_characteristic"] == 2 and report["components"] == 1
+    assert (mesh.vertices[:, 0] < -0.9).all()  # the sphere at x = -2 only
+    assert stats["normals"].shape == mesh.vertices.shape and stats["limits_hit"] == []
+    both, _ = gm.polygonize_continuation(two, 0.1, starts=np.array([[-1.0, 0, 0], [1.0, 0, 0]]), cubes=True)
+    assert both.validate()["components"] == 2
+    with pytest.raises(ValueError, match="cube_size"):
+        gm.polygonize_continuation(two, 0.0, starts=np.array([[-1.0, 0, 0]]))
+    with pytest.raises(RuntimeError, match="not near the surface"):
+        gm.polygonize_continuation(two, 0.1, starts=np.array([[10.0, 0, 0]]))

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "genmod/tessellate/batch.hpp"
+#include "genmod/tessellate/continuation_polygonizer.hpp"
 #include "genmod/tessellate/image.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/kd_tree.hpp"
