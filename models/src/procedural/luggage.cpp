@@ -6,18 +6,19 @@
 // back wall; the middle of its listing is missing). The top is named "lid", extruded once and
 // its top shaped onto a quadratic Bezier arch across x whose apex rises lidHeight (the lid
 // curves of the listing, built from the lid's bounding box). The bottom ("base") is a grid of
-// (2 columns + 1) x (2 rows + 1) cells, so every leg gets a cell with a free cell around it
-// (the thesis subdivides the base for its legs); legs fill the grid row by row from the back.
+// (2 columns + 1) x (2 rows + 1) layout cells, so every leg gets a cell with a free cell around
+// it (the thesis subdivides the base for its legs), each layout cell split in two across x so
+// that the lid's arch has twice as many facets; legs fill the grid row by row from the back.
 // Each leg is `leg` called with identical arguments and the inherited seed, a copy placed a
 // small gap below its cell and bridged to it, so with caching on it costs 1 miss and
 // numLegs - 1 hits.
 //
-// Numbers the thesis does not give: the chest body is height / 2 high in 6 cells (the listing
-// uses 15 from divBy), the lid one body cell thick, legs height / 4 long, a leg's top 0.6 of
-// its cell, the gap (the ankle the bridge makes) a quarter of the smaller cell side, the foot
+// Numbers the thesis does not give: the chest body is 0.4 height high in 6 cells (the listing
+// uses 15 from divBy), the lid one body cell thick, legs 0.35 height long, a leg's top 0.6 of
+// its layout cell, the gap (the ankle the bridge makes) a quarter of the smaller cell side, the foot
 // 0.7 of a cell long (it stays within the free cell in front), two sqrt(2) levels with
-// smoothing 0.5 on the leg. legColumns 0 chooses round(sqrt(numLegs * width / length)) columns,
-// at least 1, so the cells stay about square.
+// smoothing 0.5 on the leg. legColumns 0 chooses round(sqrt(numLegs * width / length)) columns
+// (layout cells about square), at least 2 so that the chest stands on both sides.
 #include "furniture_tools.hpp"
 #include "procedural_model_defs.hpp"
 
@@ -43,13 +44,13 @@ PolyMesh build_luggage(const Arguments& a, const CallContext& context) {
   const double lid_height = real_in(a, "luggage", "lidHeight", 0.0, 64.0 * height);
   const int leg_levels = integer_in(a, "luggage", "legSubdivisions", 0, 6);
   if (columns == 0)
-    columns = std::max(1, static_cast<int>(std::lround(std::sqrt(num_legs * width / length))));
+    columns = num_legs < 2 ? 1 : std::max(2, static_cast<int>(std::lround(std::sqrt(num_legs * width / length))));
   if (num_legs > 0 && columns > num_legs)
     refuse_parameter("luggage", "legColumns", "must be at most numLegs (" + std::to_string(num_legs) + "), got " +
                                                   std::to_string(columns));
   const int rows = num_legs == 0 ? 0 : (num_legs + columns - 1) / columns;
-  const int nx = 2 * columns + 1, nz = 2 * rows + 1;
-  const double cx = width / nx, cz = length / nz, cy = 0.5 * height / kBodyCells;
+  const int lx = 2 * columns + 1, nz = 2 * rows + 1, nx = 2 * lx;  // layout cells across x, cells along z, x
+  const double cx = width / nx, cz = length / nz, cy = 0.4 * height / kBodyCells;
 
   Workpiece w;
   // The chest: one cell, grown along -z and -x, then upwards.
@@ -72,12 +73,12 @@ PolyMesh build_luggage(const Arguments& a, const CallContext& context) {
   std::vector<FaceList> cells;
   for (int i = 0; i < num_legs; ++i) {
     const int r = i / columns, c = i % columns;
-    cells.push_back(w.select("base", ratio_box(cell_range(2 * c + 1, 2 * c + 1, nx), kAll,
+    cells.push_back(w.select("base", ratio_box(cell_range(4 * c + 2, 4 * c + 3, nx), kAll,
                                                cell_range(2 * r + 1, 2 * r + 1, nz))));
   }
   // The legs: one procedure call each, identical arguments, the caller's seed.
-  const double gap = 0.25 * std::min(cx, cz);
-  const NamedArgs leg_args{{"height", height / 4 - gap}, {"width", 0.6 * cx},      {"depth", 0.6 * cz},
+  const double gap = 0.25 * std::min(2 * cx, cz);
+  const NamedArgs leg_args{{"height", 0.35 * height - gap}, {"width", 1.2 * cx},     {"depth", 0.6 * cz},
                            {"footLength", 0.7 * cz},     {"subdivisions", leg_levels}};
   for (int i = 0; i < num_legs; ++i) {
     const auto [lo, hi] = bounds(w.mesh, cells[i]);
@@ -103,11 +104,11 @@ ProceduralModelDef luggage_definition() {
   ProceduralModel info{
       "luggage",
       "Morkel's Luggage (Algorithm 7): a chest with an arched lid on numLegs cached calls of `leg`",
-      {{"height", "twice the chest body's height; legs are height/4 long"},
+      {{"height", "the chest body is 0.4 height high, the legs 0.35 height long"},
        {"width", "chest width along x"},
        {"length", "chest length along z"},
        {"numLegs", "legs, 0-1024, in rows of legColumns under the base"},
-       {"legColumns", "legs per row across x (0: about square cells)"},
+       {"legColumns", "legs per row across x (0: about square layout cells, at least 2)"},
        {"lidHeight", "how far the lid's arch rises above the chest"},
        {"legSubdivisions", "sqrt(2) levels of each leg (passed to `leg`), 0-6"}}};
   return {std::move(spec), std::move(info)};
