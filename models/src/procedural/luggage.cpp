@@ -16,7 +16,7 @@
 // Numbers the thesis does not give: the chest body is 0.4 height high in 6 cells (the listing
 // uses 15 from divBy), the lid one body cell thick, legs 0.35 height long, a leg's top 0.6 of
 // its layout cell, the gap (the ankle the bridge makes) a quarter of the smaller cell side, the foot
-// 0.7 of a cell long (it stays within the free cell in front), two sqrt(2) levels with
+// 0.7 of a cell long (it stays within the free cell in front), three sqrt(2) levels with
 // smoothing 0.5 on the leg. legColumns 0 chooses round(sqrt(numLegs * width / length)) columns
 // (layout cells about square), at least 2 so that the chest stands on both sides.
 #include "furniture_tools.hpp"
@@ -83,8 +83,12 @@ PolyMesh build_luggage(const Arguments& a, const CallContext& context) {
   for (int i = 0; i < num_legs; ++i) {
     const auto [lo, hi] = bounds(w.mesh, cells[i]);
     const PolyMesh leg = context.call("leg", leg_args);
+    // append_mesh adds the leg's faces in order after the chest's, so its top keeps its index
+    // offset by the faces already there (no search of the whole mesh per leg).
+    const int first_face = static_cast<int>(w.mesh.n_faces());
+    FaceList leg_top;
+    for (PolyMesh::FaceHandle f : faces_labelled(leg, "legtop")) leg_top.emplace_back(first_face + f.idx());
     append_mesh(w.mesh, leg, Affine::translation(Vec3(0.5 * (lo[0] + hi[0]), -gap, 0.5 * (lo[2] + hi[2]))));
-    const FaceList leg_top = faces_labelled(w.mesh, "legtop");
     bridge(w.mesh, leg_top, cells[i], "ankle");
   }
   w.mesh.garbage_collection();
@@ -99,7 +103,7 @@ ProceduralModelDef luggage_definition() {
   spec.mode = Mode::Out;
   spec.params = {param("height", 2.0),   param("width", 1.0),      param("length", 2.0),
                  param("numLegs", 4),    param("legColumns", 0),   param("lidHeight", 0.4),
-                 param("legSubdivisions", 2)};
+                 param("legSubdivisions", 3)};
   spec.out_body = build_luggage;
   ProceduralModel info{
       "luggage",
