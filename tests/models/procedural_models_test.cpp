@@ -84,6 +84,9 @@ TEST(ProceduralModels, VariantsMeshValid) {
       {"chair", {{"arms", true}, {"bottomArms", false}}},
       {"chair", {{"shape", true}}},
       {"chair", {{"arms", true}, {"shape", true}, {"offSet", -1.0}, {"length", 3.0}, {"depth", 1.5}}},
+      {"chair", {{"feet", true}}},
+      {"chair", {{"feet", true}, {"arms", true}, {"segments", 3}}},
+      {"chair", {{"feet", true}, {"segments", 2}}},  // too few cells: extruded legs
       {"couch", {{"numCushions", 1}}},
       {"couch", {{"numCushions", 2}, {"shape", true}, {"backCushions", false}}},
       {"table", {{"roundTable", true}}},
@@ -248,6 +251,20 @@ TEST(ProceduralModels, LuggageLegsCostOneMissAndNumLegsMinusOneHits) {
     registry.call("luggage", args, seeded(8));
     EXPECT_EQ(registry.cache_stats("leg").misses, 2u);
   }
+}
+
+// The chair's feet reuse the luggage's cacheable leg (thesis: the chair's #Leg): four calls,
+// one build.
+TEST(ProceduralModels, ChairFeetAreOneLegBuildAndThreeHits) {
+  ProcedureRegistry registry;
+  register_procedural_models(registry);
+  const PolyMesh chair = registry.call("chair", {{"feet", true}});
+  EXPECT_EQ(registry.cache_stats("leg").misses, 1u);
+  EXPECT_EQ(registry.cache_stats("leg").hits, 3u);
+  EXPECT_EQ(faces_labelled(chair, "legs").size(), 0u);
+  EXPECT_GT(faces_labelled(chair, "ankle").size(), 0u);
+  registry.set_caching(false);
+  EXPECT_EQ(mesh_difference(registry.call("chair", {{"feet", true}}), chair), "");
 }
 
 }  // namespace

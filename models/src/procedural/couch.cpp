@@ -16,7 +16,7 @@ ProceduralModelDef couch_definition() {
                  param("backLength", 1.5), param("segments", 6),        param("numCushions", 3),
                  param("arms", true),      param("bottomArms", true),   param("backCushions", true),
                  param("shape", false),    param("offSet", 2.0)};
-  spec.out_body = [](const Arguments& a, const CallContext&) {
+  spec.out_body = [](const Arguments& a, const CallContext& context) {
     SeatingShape s;
     s.length = positive_real(a, "couch", "length");
     s.depth = positive_real(a, "couch", "depth");
@@ -29,7 +29,7 @@ ProceduralModelDef couch_definition() {
     s.back_cushions = a.boolean("backCushions");
     s.shape = a.boolean("shape");
     s.offset = real_in(a, "couch", "offSet", -1.0, 16.0);
-    return build_seating(s);
+    return build_seating(s, context);
   };
   ProceduralModel info{
       "couch",

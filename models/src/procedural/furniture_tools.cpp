@@ -1,5 +1,8 @@
 #include "furniture_tools.hpp"
 
+#include "genmod/procedural/affine.hpp"
+#include "genmod/procedural/stitching.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -69,6 +72,17 @@ FaceList Workpiece::extrude_chain(FaceList faces, const Vec3& by, int times) {
   for (int i = 0; i < times; ++i) faces = extrude(mesh, faces, by);
   sets.update(mesh);
   return faces;
+}
+
+void attach_leg(Workpiece& w, const PolyMesh& leg, const FaceList& cell, double gap) {
+  const auto [lo, hi] = bounds(w.mesh, cell);
+  // append_mesh adds the leg's faces in order after the mesh's, so its top keeps its index
+  // offset by the faces already there (no search of the whole mesh per leg).
+  const int first_face = static_cast<int>(w.mesh.n_faces());
+  FaceList top;
+  for (PolyMesh::FaceHandle f : faces_labelled(leg, "legtop")) top.emplace_back(first_face + f.idx());
+  append_mesh(w.mesh, leg, Affine::translation(Vec3(0.5 * (lo[0] + hi[0]), lo[1] - gap, 0.5 * (lo[2] + hi[2]))));
+  bridge(w.mesh, top, cell, "ankle");
 }
 
 FaceList merged(std::initializer_list<FaceList> lists) {

@@ -50,6 +50,12 @@ struct Workpiece {
   FaceList faces(const std::string& id) const { return sets.get(id).faces; }
 };
 
+// Adds a copy of `leg` (a `leg` procedure's mesh: flat top quad labelled "legtop" at y = 0)
+// centred below `cell` (faces of w.mesh on the plane y = lowest of the cell's vertices) with its
+// top `gap` below, and bridges the top to the cell (the new triangles labelled "ankle"). The
+// mesh is not garbage-collected: handles of other faces stay valid.
+void attach_leg(Workpiece& w, const PolyMesh& leg, const FaceList& cell, double gap);
+
 // The union of face lists, in index order without repeats (selections that may overlap).
 FaceList merged(std::initializer_list<FaceList> lists);
 

@@ -80,17 +80,7 @@ PolyMesh build_luggage(const Arguments& a, const CallContext& context) {
   const double gap = 0.25 * std::min(2 * cx, cz);
   const NamedArgs leg_args{{"height", 0.35 * height - gap}, {"width", 1.2 * cx},     {"depth", 0.6 * cz},
                            {"footLength", 0.7 * cz},     {"subdivisions", leg_levels}};
-  for (int i = 0; i < num_legs; ++i) {
-    const auto [lo, hi] = bounds(w.mesh, cells[i]);
-    const PolyMesh leg = context.call("leg", leg_args);
-    // append_mesh adds the leg's faces in order after the chest's, so its top keeps its index
-    // offset by the faces already there (no search of the whole mesh per leg).
-    const int first_face = static_cast<int>(w.mesh.n_faces());
-    FaceList leg_top;
-    for (PolyMesh::FaceHandle f : faces_labelled(leg, "legtop")) leg_top.emplace_back(first_face + f.idx());
-    append_mesh(w.mesh, leg, Affine::translation(Vec3(0.5 * (lo[0] + hi[0]), -gap, 0.5 * (lo[2] + hi[2]))));
-    bridge(w.mesh, leg_top, cells[i], "ankle");
-  }
+  for (int i = 0; i < num_legs; ++i) attach_leg(w, context.call("leg", leg_args), cells[i], gap);
   w.mesh.garbage_collection();
   return std::move(w.mesh);
 }

@@ -16,7 +16,7 @@
 
 namespace genmod::models::detail {
 
-PolyMesh build_seating(const SeatingShape& s) {
+PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
   const int n = s.segments;
   const int nx = n * s.cushions;  // seat cells along x
   const double lu = s.length / n, du = s.depth / n, hu = s.back_length / n, gu = s.leg_length / n;
@@ -71,13 +71,22 @@ PolyMesh build_seating(const SeatingShape& s) {
 
   // 4. Legs: the bottom faces of the four corner cells (thesis: the corner quarters of the
   //    base, one cell at 6 segments), extruded together n times by a leg unit downwards. With
-  //    one or two cells per axis the corners meet and the legs merge into one block.
+  //    one or two cells per axis the corners meet and the legs merge into one block. With feet
+  //    (and at least 3 cells per axis, so the corners are apart) the corners are named here and
+  //    get `leg` calls at the end (step 7).
+  const bool feet = s.feet && n >= 3;
   {
     const auto xl = cell_range(0, 0, nx), xr = cell_range(nx - 1, nx - 1, nx);
     const auto zb = cell_range(0, 0, n), zf = cell_range(n - 1, n - 1, n);
-    const FaceList legs = merged({w.select("seat", ratio_box(xl, kLow, zb)), w.select("seat", ratio_box(xr, kLow, zb)),
-                                  w.select("seat", ratio_box(xr, kLow, zf)), w.select("seat", ratio_box(xl, kLow, zf))});
-    w.extrude_chain(w.name("legs", legs), Vec3(0, -gu, 0), n);
+    const RatioBox corners[4] = {ratio_box(xl, kLow, zb), ratio_box(xr, kLow, zb), ratio_box(xr, kLow, zf),
+                                 ratio_box(xl, kLow, zf)};
+    if (feet) {
+      for (int i = 0; i < 4; ++i) w.name("foot" + std::to_string(i + 1), w.select("seat", corners[i]));
+    } else {
+      const FaceList legs = merged({w.select("seat", corners[0]), w.select("seat", corners[1]),
+                                    w.select("seat", corners[2]), w.select("seat", corners[3])});
+      w.extrude_chain(w.name("legs", legs), Vec3(0, -gu, 0), n);
+    }
   }
 
   // 5. Arms (segments >= 3): an arm rest from the back's front in the outer x cells at back row
@@ -121,13 +130,29 @@ PolyMesh build_seating(const SeatingShape& s) {
     shape_to_curve(w.mesh, top, arch, Vec3(0, 1, 0), Vec3(0, 0, 1));
   }
 
-  // 5b. The arm joins: the underside of the rest's front cell bridged to the post's top.
+  // 5b. The arm joins: the underside of the rest's front cell bridged to the post's top. All
+  //    faces to join are selected first: a bridge deletes faces, which the named sets still
+  //    list until the garbage collection at the end.
+  std::vector<std::pair<FaceList, FaceList>> bridges;
   for (const ArmJoin& a : joins) {
     const int rest_cells = n - 1;  // the rest's z cells, from the back's front to the seat's front
-    const FaceList under =
-        w.select(a.rest, ratio_box(kAll, kLow, cell_range(rest_cells - 1, rest_cells - 1, rest_cells)));
-    const FaceList post_top = w.select(a.post, ratio_box(kAll, kHigh, kAll));
-    bridge(w.mesh, under, post_top, a.rest);
+    bridges.emplace_back(w.select(a.rest, ratio_box(kAll, kLow, cell_range(rest_cells - 1, rest_cells - 1, rest_cells))),
+                         w.select(a.post, ratio_box(kAll, kHigh, kAll)));
+  }
+  std::vector<FaceList> foot_cells;
+  if (feet)
+    for (int i = 0; i < 4; ++i) foot_cells.push_back(w.faces("foot" + std::to_string(i + 1)));
+  for (std::size_t i = 0; i < joins.size(); ++i) bridge(w.mesh, bridges[i].first, bridges[i].second, joins[i].rest);
+
+  // 7. Feet (the listing's `feet`: #Leg per corner): one `leg` call with the same arguments for
+  //    each corner, its top a quarter of the smaller unit below the corner cell and bridged to
+  //    it, its foot pointing forward. The leg's top is 0.6 of the cell, the foot 0.7 of a depth
+  //    unit long (numbers the listing takes from its human Leg).
+  if (feet) {
+    const double gap = 0.25 * std::min(lu, du);
+    const NamedArgs leg_args{{"height", s.leg_length - gap}, {"width", 0.6 * lu}, {"depth", 0.6 * du},
+                             {"footLength", 0.7 * du}};
+    for (const FaceList& cell : foot_cells) attach_leg(w, context.call("leg", leg_args), cell, gap);
   }
   w.mesh.garbage_collection();
   return std::move(w.mesh);

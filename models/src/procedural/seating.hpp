@@ -2,7 +2,7 @@
 // widened to several cushions, as research/morkel.md's [decision] for the couch says.
 #pragma once
 
-#include "genmod/procedural/poly_mesh.hpp"
+#include "genmod/procedural/procedure.hpp"
 
 #include <string>
 
@@ -16,11 +16,14 @@ struct SeatingShape {
   int segments = 6;          // cells per cushion along x, along z, in the back and in the legs
   int cushions = 1;          // seat cushions side by side along x
   bool arms = false, bottom_arms = true, shape = false, back_cushions = false;
+  bool feet = false;  // `leg` procedure calls instead of extruded legs (needs segments >= 3)
   double offset = 2.0;  // the shaped back top rises offset * backLength / segments / 2 in the middle
 };
 
 // Checked by the callers; builds the seat in [0, cushions * length] x [-leg_length, ...] x
 // [0, depth], the back at the low z side, facing +z.
-PolyMesh build_seating(const SeatingShape& s);
+// With feet, the legs are calls of `leg` through `context` (same arguments: one build, three
+// copies when caching is on).
+PolyMesh build_seating(const SeatingShape& s, const CallContext& context);
 
 }  // namespace genmod::models::detail
