@@ -8,9 +8,10 @@
 //            thesis reuses its human Leg/Foot here; genmod has no human model, so this simple
 //            leg stands in for it (one signature, one cache, as Experiment 6 needs).
 //   chair    Algorithm 5: a seat grown from one box by extrusions along x and z, a back grown
-//            up from the rear row, a subdivided cushion, four legs, optional arms (arm rests
-//            extruded forward from the back, posts up from the seat, bridged) and an optional
-//            shaped back top.
+//            up from the rear row, a subdivided cushion, four legs (extruded, or with `feet`
+//            four calls of `leg` bridged under the corners), optional arms (arm rests extruded
+//            forward from the back, posts up from the seat, bridged) and an optional shaped
+//            back top.
 //   couch    Algorithm 6: the chair's construction widened to numCushions cushions, with back
 //            cushions.
 //   table    Algorithm 8: a box top grown by extrusions, or an oval top (a flat box
