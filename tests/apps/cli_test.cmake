@@ -86,6 +86,13 @@ elseif(CASE STREQUAL "mesh_procedural")
   endforeach()
   expect_ok(mesh chair -p arms=true -p segments=8 -p backLength=2.5 --seed 3 -o ${WORK}/chair_arms.obj)
   expect_ok(mesh luggage -p numLegs=12 -o ${WORK}/luggage12.stl)
+  # Another process, the same arguments and seed: the same bytes.
+  expect_ok(mesh luggage -p numLegs=12 -o ${WORK}/luggage12_again.stl)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/luggage12.stl ${WORK}/luggage12_again.stl
+                  RESULT_VARIABLE differ)
+  if(NOT differ EQUAL 0)
+    message(FATAL_ERROR "two runs of genmod mesh luggage wrote different files")
+  endif()
   expect_ok(mesh table -p roundTable=1 -o ${WORK}/round.off)
   expect_error(ARGS mesh chair -p length=-1 -o ${WORK}/bad.ply NEEDLES "'chair'" "'length'")
   expect_error(ARGS mesh luggage -p numLegs=2.5 -o ${WORK}/bad.ply NEEDLES "numLegs" "not an integer")
