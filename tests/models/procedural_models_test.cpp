@@ -127,7 +127,7 @@ TEST(ProceduralModels, LuggageWithExperimentLegCounts) {
     expect_valid_closed(mesh);
     faces.push_back(mesh.n_faces());
   }
-  double least = INFINITY, most = 0;
+  double least = HUGE_VAL, most = 0;
   for (std::size_t i = 1; i < faces.size(); ++i) {
     EXPECT_GT(faces[i], faces[i - 1]);
     const double step = static_cast<double>(faces[i]) - static_cast<double>(faces[i - 1]);
@@ -158,7 +158,7 @@ TEST(ProceduralModels, ParametersChangeTheResult) {
   EXPECT_NEAR(extent(table, 2), 1.5, 1e-12);
   // The round top's corners are rounded off by the smoothing; with smoothing 0 they stay.
   const auto corner_distance = [](const PolyMesh& m) {
-    double d = INFINITY;
+    double d = HUGE_VAL;
     for (auto v : m.vertices()) d = std::min(d, (m.point(v) - Vec3(1.5, 0.2, 1.0)).norm());
     return d;
   };
@@ -218,7 +218,7 @@ TEST(ProceduralModels, BadParametersAreRefusedNamingProcedureAndParameter) {
       {"table", {{"roundTable", true}, {"segments", 2}}, "segments"},
       {"luggage", {{"numLegs", -1}}, "numLegs"},
       {"luggage", {{"numLegs", 2}, {"legColumns", 3}}, "legColumns"},
-      {"luggage", {{"width", INFINITY}}, "width"},
+      {"luggage", {{"width", HUGE_VAL}}, "width"},
       {"leg", {{"smoothing", 1.5}}, "smoothing"},
   };
   for (const Case& c : cases) {
