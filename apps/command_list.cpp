@@ -3,8 +3,10 @@
 
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
+#include "genmod/models/procedural_models.hpp"
 
 #include <cstdio>
+#include <string>
 
 namespace genmod::app {
 namespace {
@@ -24,6 +26,30 @@ int run_list(std::span<const std::string> args) {
                 m.box[2].hi(), m.min_feature);
     for (const models::ModelParameter& p : m.parameters)
       std::printf("    %-14s %-8g %s\n", p.name.c_str(), p.value, p.doc.c_str());
+  }
+  std::printf("\nprocedural models (Morkel's registered procedures; genmod mesh NAME [--param K=V] [--seed S] -o FILE)\n");
+  const ProcedureRegistry& registry = models::procedural_registry();
+  for (const models::ProceduralModel& m : models::procedural_gallery()) {
+    const ProcedureSpec& spec = registry.spec(m.name);
+    std::printf("%s (procedural%s)\n  %s\n", m.name.c_str(), spec.cacheable ? ", cacheable" : "", m.description.c_str());
+    for (std::size_t i = 0; i < spec.params.size(); ++i) {
+      const ParamValue& d = *spec.params[i].default_value;
+      std::string shown;
+      switch (d.type()) {
+        case ParamType::Double: {
+          char text[32];
+          std::snprintf(text, sizeof text, "%g", d.as_double());
+          shown = text;
+          break;
+        }
+        case ParamType::Integer: shown = std::to_string(d.as_integer()); break;
+        case ParamType::Boolean: shown = d.as_bool() ? "true" : "false"; break;
+        case ParamType::String: shown = d.as_string(); break;
+        case ParamType::Vector: shown = "vector"; break;
+      }
+      std::printf("    %-16s %-8s %-7s %s\n", spec.params[i].name.c_str(), shown.c_str(),
+                  std::string(java_type_name(d.type())).c_str(), m.parameter_docs[i].second.c_str());
+    }
   }
   return 0;
 }

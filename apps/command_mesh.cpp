@@ -6,6 +6,7 @@
 
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
+#include "genmod/models/procedural_models.hpp"
 #include "genmod/tessellate/mesh_io.hpp"
 #include "genmod/tessellate/validate.hpp"
 
@@ -42,6 +43,8 @@ int run_mesh(std::span<const std::string> args) {
   for (const std::string& arg : args)
     if ((arg.size() > 3 && arg.compare(arg.size() - 3, 3, ".vm") == 0) || models::find_implicit_model(arg))
       return run_mesh_implicit(args);
+  for (const std::string& arg : args)
+    if (models::find_procedural_model(arg)) return run_mesh_procedural(args);
   // --param repeats for different parameters: take every occurrence out before the generic
   // scanner sees the rest. The same parameter twice is a mistake, not "last one wins".
   models::ParameterValues overrides;
@@ -136,7 +139,7 @@ int run_mesh(std::span<const std::string> args) {
 
 const Command kMeshCommand{
     "mesh", "NAME [--param NAME=VALUE ...] [--tolerance E | --res N] [--max-memory MB] -o FILE | MODEL.vm --min-feature H [options] -o FILE",
-    "mesh a gallery model (see `genmod list`) or an implicit .vm model to an OBJ/PLY/STL/OFF file",
+    "mesh a gallery, procedural (see `genmod list`) or implicit .vm model to an OBJ/PLY/STL/OFF file",
     "  -p, --param K=V  set a model parameter (once per parameter; defaults from `genmod list`)\n"
     "  --tolerance E    largest distance between mesh and surface (adaptive kd-tree mesher, the default;\n"
     "                 default 0.001 of the model's size); the certified bound is printed\n"
@@ -146,6 +149,10 @@ const Command kMeshCommand{
     "  --max-memory MB  refuse a lattice whose estimated memory is above MB, or stop refining the adaptive\n"
     "                 mesh there (default half the physical memory)\n"
     "  -o, --output     mesh file to write; the format follows the extension (.obj .ply .stl .off)\n"
+    "procedural models (see `genmod list`; the procedure's polygons, triangulated as built):\n"
+    "  -p, --param K=V  a procedure parameter: a number, an integer or true/false as declared\n"
+    "  --seed S         the random seed of the call (default 0)\n"
+    "  --no-check       skip the validity report (exit status 1 when the mesh is not valid)\n"
     "implicit models (MODEL.vm or an implicit gallery name; the mesh bounds the solid f < 0 in the box):\n"
     "  --box x0,y0,z0,x1,y1,z1  region to mesh (default: the model's box, or -1,-1,-1,1,1,1)\n"
     "  --min-feature H  smallest cell edge (required for .vm files)\n"

@@ -9,3 +9,4 @@
 #include "genmod/procedural/procedural.hpp"
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
+#include "genmod/models/procedural_models.hpp"

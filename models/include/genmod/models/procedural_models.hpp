@@ -1,0 +1,71 @@
+// Morkel's furniture models (research/morkel.md section 3.2, thesis App. C.4-C.5) as registered
+// procedures of the procedural layer, built with its tools only: ratio-box selections of named
+// face sets, chained extrusions, adaptive sqrt(2) subdivision of cushions, curve shaping of a
+// chair back or a lid, and bridges (the stitching tool on one mesh) for arms and legs.
+//
+//   leg      the cacheable Out procedure the Luggage stands on: a column extruded from a box,
+//            a foot extruded forward, everything but the flat top subdivided and smoothed. The
+//            thesis reuses its human Leg/Foot here; genmod has no human model, so this simple
+//            leg stands in for it (one signature, one cache, as Experiment 6 needs).
+//   chair    Algorithm 5: a seat grown from one box by extrusions along x and z, a back grown
+//            up from the rear row, a subdivided cushion, four legs (extruded, or with `feet`
+//            four calls of `leg` bridged under the corners), optional arms (arm rests extruded
+//            forward from the back, posts up from the seat, bridged) and an optional shaped
+//            back top.
+//   couch    Algorithm 6: the chair's construction widened to numCushions cushions, with back
+//            cushions.
+//   table    Algorithm 8: a box top grown by extrusions, or an oval top (a flat box
+//            subdivided with the smoothing factor), on four legs.
+//   luggage  Algorithm 7: a chest grown by extrusions with an arched lid (curve shaping), on
+//            numLegs legs, each a call of `leg` with the same arguments and the inherited seed,
+//            so with caching on the leg costs one miss and numLegs - 1 hits (claim 12).
+//
+// Every model's mesh is closed, 2-manifold, oriented outward and free of self-intersections
+// (tests/models/procedural_models_test.cpp checks this with the CGAL validator), and the same
+// arguments and seed give the same bytes. Bad values are refused with std::invalid_argument
+// naming the procedure and the parameter ("call 'chair': parameter 'length' ...").
+//
+// Example:
+//   using namespace genmod;
+//   const ProcedureRegistry& registry = models::procedural_registry();
+//   PolyMesh chair = registry.call("chair", {{"backLength", 2.0}, {"arms", true}});
+//   Mesh triangles = models::mesh_procedural_model("chair");   // `genmod mesh chair -o chair.ply`, z up
+//   if (chair.n_faces() == 0 || triangles.triangles.empty()) throw std::runtime_error("no chair");
+#pragma once
+
+#include "genmod/procedural/procedure.hpp"
+#include "genmod/tessellate/mesh.hpp"
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace genmod::models {
+
+// A procedural model as `genmod list` shows it: the name of its registered procedure, a line
+// of description and one line of documentation per parameter (in declaration order; types and
+// defaults come from the procedure's spec).
+struct ProceduralModel {
+  std::string name, description;
+  std::vector<std::pair<std::string, std::string>> parameter_docs;
+};
+
+// leg, chair, couch, table, luggage, in that order.
+const std::vector<ProceduralModel>& procedural_gallery();
+// nullptr when no procedural model has that name.
+const ProceduralModel* find_procedural_model(const std::string& name);
+
+// Adds the five procedures to `registry` (std::invalid_argument if one of the names is taken).
+void register_procedural_models(ProcedureRegistry& registry);
+// A process-wide registry holding exactly these procedures, registered on first use (thread
+// safe). Its caching switch and cache counters are shared by all users of this registry; tests
+// and benchmarks that count cache hits use a registry of their own.
+ProcedureRegistry& procedural_registry();
+
+// The triangulated mesh of procedural_registry().call(name, args, {seed}), turned from the
+// procedures' frame (y up, the front facing +z, as in the thesis's Java3D) to genmod's z up
+// (x, y, z) -> (x, -z, y): the front faces -y, towards `genmod preview`'s viewpoint.
+Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args = {}, std::int64_t seed = 0);
+
+}  // namespace genmod::models

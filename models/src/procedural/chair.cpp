@@ -1,0 +1,52 @@
+// chair: Algorithm 5 / App. C.4 of the thesis (research/morkel.md section 3.2) as a registered
+// Out procedure. Parameters and defaults are the listing's, less the ones it declares but does
+// not use or that genmod has no counterpart for: numLegs and type (unused), cubic (the disc
+// base: no Disc primitive here), file and fileName (`genmod mesh` writes files). feet calls
+// genmod's `leg` procedure (leg.cpp) where the listing calls the human Leg. segments is an Integer here (the thesis's 6.0 is used as a count). bottomArms is
+// Algorithm 5's flag (the listing joins the posts whenever arms is set).
+#include "furniture_tools.hpp"
+#include "procedural_model_defs.hpp"
+#include "seating.hpp"
+
+namespace genmod::models::detail {
+
+ProceduralModelDef chair_definition() {
+  ProcedureSpec spec;
+  spec.name = "chair";
+  spec.mode = Mode::Out;
+  spec.params = {param("length", 2.0),   param("depth", 2.0),     param("legLength", 2.0),  param("backLength", 1.5),
+                 param("segments", 6),   param("arms", false),    param("bottomArms", true), param("shape", false),
+                 param("offSet", 2.0), param("feet", false)};
+  spec.out_body = [](const Arguments& a, const CallContext& context) {
+    SeatingShape s;
+    s.length = positive_real(a, "chair", "length");
+    s.depth = positive_real(a, "chair", "depth");
+    s.leg_length = positive_real(a, "chair", "legLength");
+    s.back_length = positive_real(a, "chair", "backLength");
+    s.segments = integer_in(a, "chair", "segments", 1, 64);
+    s.arms = a.boolean("arms");
+    s.bottom_arms = a.boolean("bottomArms");
+    s.shape = a.boolean("shape");
+    // Down to -1: the top row (one height unit) keeps half its height at the dip.
+    s.offset = real_in(a, "chair", "offSet", -1.0, 16.0);
+    s.feet = a.boolean("feet");
+    return build_seating(s, context);
+  };
+  ProceduralModel info{
+      "chair",
+      "Morkel's chair (Algorithm 5): seat grown by extrusions, back, subdivided cushion, four legs, optional arms "
+      "(bridged) and shaped back",
+      {{"length", "seat width along x"},
+       {"depth", "seat depth along z"},
+       {"legLength", "leg length below the seat"},
+       {"backLength", "back height above the seat"},
+       {"segments", "cells per axis (detail; 1-3 give partial chairs: no cushion, no arms)"},
+       {"arms", "arm rests extruded from the back"},
+       {"bottomArms", "with arms: posts from the seat bridged to the rests"},
+       {"shape", "arch the top of the back"},
+       {"offSet", "arch control height in back cells (apex rises half of it); -1..16"},
+       {"feet", "legs are calls of the cacheable `leg` (with feet) instead of extrusions; segments >= 3"}}};
+  return {std::move(spec), std::move(info)};
+}
+
+}  // namespace genmod::models::detail

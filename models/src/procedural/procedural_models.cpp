@@ -1,0 +1,72 @@
+// The procedural models' registry and list (procedural_models.hpp).
+#include "genmod/models/procedural_models.hpp"
+
+#include "procedural_model_defs.hpp"
+
+#include "genmod/procedural/affine.hpp"
+
+#include <stdexcept>
+
+namespace genmod::models {
+namespace {
+
+std::vector<detail::ProceduralModelDef> definitions() {
+  std::vector<detail::ProceduralModelDef> defs;
+  defs.push_back(detail::leg_definition());
+  defs.push_back(detail::chair_definition());
+  defs.push_back(detail::couch_definition());
+  defs.push_back(detail::table_definition());
+  defs.push_back(detail::luggage_definition());
+  // Each documented parameter is a declared one, in the same order.
+  for (const auto& d : defs) {
+    bool same = d.spec.params.size() == d.info.parameter_docs.size() && d.spec.name == d.info.name;
+    for (std::size_t i = 0; same && i < d.spec.params.size(); ++i)
+      same = d.spec.params[i].name == d.info.parameter_docs[i].first;
+    if (!same) throw std::logic_error("procedural model '" + d.info.name + "': documentation and signature differ");
+  }
+  return defs;
+}
+
+}  // namespace
+
+const std::vector<ProceduralModel>& procedural_gallery() {
+  static const std::vector<ProceduralModel> gallery = [] {
+    std::vector<ProceduralModel> g;
+    for (auto& d : definitions()) g.push_back(std::move(d.info));
+    return g;
+  }();
+  return gallery;
+}
+
+const ProceduralModel* find_procedural_model(const std::string& name) {
+  for (const ProceduralModel& m : procedural_gallery())
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+void register_procedural_models(ProcedureRegistry& registry) {
+  for (auto& d : definitions()) registry.add(std::move(d.spec));
+}
+
+ProcedureRegistry& procedural_registry() {
+  static ProcedureRegistry registry;
+  static const bool registered = [] {
+    register_procedural_models(registry);
+    return true;
+  }();
+  (void)registered;
+  return registry;
+}
+
+Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args, std::int64_t seed) {
+  Context context;
+  context.seed = seed;
+  PolyMesh mesh = procedural_registry().call(name, args, context);
+  // y up -> z up: (x, y, z) -> (x, -z, y), a rotation (orientation kept).
+  Affine to_z_up;
+  to_z_up.m = {{{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}}};
+  apply_affine(to_z_up, mesh);
+  return to_triangle_mesh(mesh);
+}
+
+}  // namespace genmod::models

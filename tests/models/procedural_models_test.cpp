@@ -1,0 +1,279 @@
+// Morkel's furniture models as registered procedures (procedural_models.hpp): valid closed
+// meshes, parameters that act, reproducible bytes, refused bad values, and the luggage's leg
+// cache counts of research/morkel.md claim 12.
+#include "genmod/models/procedural_models.hpp"
+
+#include "genmod/procedural/mesh_hash.hpp"
+#include "procedural/mesh_test_support.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace genmod::models {
+namespace {
+
+using genmod::test::expect_valid_closed;
+using genmod::test::mesh_difference;
+
+PolyMesh build(const std::string& name, const NamedArgs& args = {}, std::int64_t seed = 0) {
+  Context c;
+  c.seed = seed;
+  return procedural_registry().call(name, args, c);
+}
+
+Context seeded(std::int64_t seed) {
+  Context c;
+  c.seed = seed;
+  return c;
+}
+
+std::array<Vec3, 2> box_of(const PolyMesh& mesh) { return bounds(mesh, all_faces(mesh)); }
+double extent(const PolyMesh& mesh, int axis) {
+  const auto b = box_of(mesh);
+  return b[1][axis] - b[0][axis];
+}
+
+// The message of the std::invalid_argument `f` throws ("" when it does not throw).
+template <class F>
+std::string refusal(F f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ProceduralModels, GalleryListsTheFiveProceduresWithTheirParameters) {
+  std::vector<std::string> names;
+  for (const ProceduralModel& m : procedural_gallery()) {
+    names.push_back(m.name);
+    ASSERT_TRUE(procedural_registry().contains(m.name));
+    const ProcedureSpec& spec = procedural_registry().spec(m.name);
+    ASSERT_EQ(spec.params.size(), m.parameter_docs.size()) << m.name;
+    for (std::size_t i = 0; i < spec.params.size(); ++i) EXPECT_EQ(spec.params[i].name, m.parameter_docs[i].first);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"leg", "chair", "couch", "table", "luggage"}));
+  EXPECT_EQ(find_procedural_model("doorknob"), nullptr);
+  ASSERT_NE(find_procedural_model("luggage"), nullptr);
+  // The thesis's Luggage signature begins height, width, length, numLegs with its defaults.
+  EXPECT_EQ(procedural_registry().signature("luggage").rfind("OUT:Double,height:Double,width:Double,length:Integer,numLegs", 0),
+            0u);
+  EXPECT_TRUE(procedural_registry().spec("leg").cacheable);
+}
+
+TEST(ProceduralModels, DefaultsMeshClosedManifoldOutwardWithoutSelfIntersections) {
+  for (const ProceduralModel& m : procedural_gallery()) {
+    SCOPED_TRACE(m.name);
+    const PolyMesh mesh = build(m.name);
+    EXPECT_GT(mesh.n_faces(), 20u);
+    expect_valid_closed(mesh);
+  }
+}
+
+TEST(ProceduralModels, VariantsMeshValid) {
+  const std::vector<std::pair<std::string, NamedArgs>> variants = {
+      {"chair", {{"arms", true}}},
+      {"chair", {{"arms", true}, {"bottomArms", false}}},
+      {"chair", {{"shape", true}}},
+      {"chair", {{"arms", true}, {"shape", true}, {"offSet", -1.0}, {"length", 3.0}, {"depth", 1.5}}},
+      {"chair", {{"feet", true}}},
+      {"chair", {{"feet", true}, {"arms", true}, {"segments", 3}}},
+      {"chair", {{"feet", true}, {"segments", 2}}},  // too few cells: extruded legs
+      {"couch", {{"numCushions", 1}}},
+      {"couch", {{"numCushions", 2}, {"shape", true}, {"backCushions", false}}},
+      {"table", {{"roundTable", true}}},
+      {"table", {{"roundTable", true}, {"smoothingFactor", 0.0}}},
+      {"table", {{"roundTable", true}, {"segments", 4}}},
+      {"table", {{"segments", 3}, {"length", 1.0}}},
+      {"luggage", {{"numLegs", 0}}},
+      {"luggage", {{"numLegs", 1}}},
+      {"luggage", {{"numLegs", 7}, {"legColumns", 3}, {"lidHeight", 0.0}}},
+      {"leg", {{"subdivisions", 0}}},
+  };
+  for (std::size_t i = 0; i < variants.size(); ++i) {
+    SCOPED_TRACE(variants[i].first + ", variant " + std::to_string(i));
+    expect_valid_closed(build(variants[i].first, variants[i].second));
+  }
+}
+
+// Claim 30: the chair completes at every segments 1..10 (valid), with all its parts from 5 on.
+TEST(ProceduralModels, ChairAtEveryDetailLevel) {
+  for (int segments = 1; segments <= 10; ++segments) {
+    SCOPED_TRACE("segments " + std::to_string(segments));
+    const PolyMesh chair = build("chair", {{"segments", segments}, {"arms", true}});
+    expect_valid_closed(chair);
+    if (segments >= 5) {
+      for (const char* part : {"back", "cushion1", "legs", "armrest_l", "armrest_r", "seat"})
+        EXPECT_FALSE(faces_labelled(chair, part).empty()) << part;
+    }
+  }
+}
+
+// Claim 30: the luggage's face count grows by a constant amount per leg (same leg, same
+// layout rule; the base grid grows with the rows).
+TEST(ProceduralModels, LuggageWithExperimentLegCounts) {
+  std::vector<std::size_t> faces;
+  for (int legs : {6, 12, 18, 24, 30}) {
+    SCOPED_TRACE("numLegs " + std::to_string(legs));
+    const PolyMesh mesh = build("luggage", {{"numLegs", legs}});
+    expect_valid_closed(mesh);
+    faces.push_back(mesh.n_faces());
+  }
+  double least = HUGE_VAL, most = 0;
+  for (std::size_t i = 1; i < faces.size(); ++i) {
+    EXPECT_GT(faces[i], faces[i - 1]);
+    const double step = static_cast<double>(faces[i]) - static_cast<double>(faces[i - 1]);
+    least = std::min(least, step);
+    most = std::max(most, step);
+  }
+  // Six more legs add about the same number of faces each time (within 20%).
+  EXPECT_LE(most, 1.2 * least);
+}
+
+TEST(ProceduralModels, ParametersChangeTheResult) {
+  // The chair's height is legLength + seat + backLength: changing the back by 1 changes it by 1.
+  const PolyMesh chair = build("chair"), tall = build("chair", {{"backLength", 2.5}});
+  EXPECT_NEAR(extent(tall, 1) - extent(chair, 1), 1.0, 1e-12);
+  EXPECT_NEAR(extent(chair, 1), 2.0 + 1.0 / 3.0 + 1.5, 1e-12);
+  const PolyMesh long_legs = build("chair", {{"legLength", 3.0}});
+  EXPECT_NEAR(box_of(long_legs)[0][1], -3.0, 1e-12);
+  EXPECT_NEAR(extent(build("chair", {{"length", 3.0}}), 0), 3.0, 1e-12);
+  EXPECT_NEAR(extent(build("chair", {{"depth", 1.2}}), 2), 1.2, 1e-12);
+  // Arms add faces, a shaped back rises above the flat one.
+  EXPECT_GT(build("chair", {{"arms", true}}).n_faces(), chair.n_faces());
+  EXPECT_GT(box_of(build("chair", {{"shape", true}}))[1][1], box_of(chair)[1][1]);
+  // The couch grows with its cushions.
+  EXPECT_NEAR(extent(build("couch", {{"numCushions", 4}}), 0), 8.0, 1e-12);
+  // The table's top has the given size; the round one is inside the box one's footprint.
+  const PolyMesh table = build("table", {{"length", 4.0}, {"width", 1.5}});
+  EXPECT_NEAR(extent(table, 0), 4.0, 1e-12);
+  EXPECT_NEAR(extent(table, 2), 1.5, 1e-12);
+  // The round top's corners are rounded off by the smoothing; with smoothing 0 they stay.
+  const auto corner_distance = [](const PolyMesh& m) {
+    double d = HUGE_VAL;
+    for (auto v : m.vertices()) d = std::min(d, (m.point(v) - Vec3(1.5, 0.2, 1.0)).norm());
+    return d;
+  };
+  const PolyMesh round = build("table", {{"roundTable", true}});
+  EXPECT_GT(corner_distance(round), 0.05);
+  EXPECT_EQ(corner_distance(build("table", {{"roundTable", true}, {"smoothingFactor", 0.0}})), 0.0);
+  EXPECT_LE(extent(round, 0), 3.0);
+  EXPECT_NE(content_hash(round), content_hash(build("table", {{"roundTable", true}, {"smoothingFactor", 0.5}})));
+  // The luggage: width and length are the chest's; more legs, more faces.
+  const PolyMesh luggage = build("luggage", {{"width", 1.5}, {"length", 3.0}});
+  EXPECT_NEAR(extent(luggage, 0), 1.5, 1e-12);
+  EXPECT_NEAR(extent(luggage, 2), 3.0, 1e-12);
+  EXPECT_GT(build("luggage", {{"numLegs", 5}}).n_faces(), build("luggage").n_faces());
+  EXPECT_GT(box_of(build("luggage", {{"lidHeight", 1.0}}))[1][1], box_of(build("luggage"))[1][1]);
+  // The leg's top is the flat quad the luggage bridges to.
+  const PolyMesh leg = build("leg", {{"height", 2.0}, {"smoothing", 0.0}});
+  EXPECT_NEAR(box_of(leg)[0][1], -2.0, 1e-12);
+  EXPECT_NEAR(box_of(leg)[1][2], 0.125 + 0.2, 1e-12);  // the foot reaches footLength forward
+  EXPECT_EQ(faces_labelled(leg, "legtop").size(), 1u);
+}
+
+TEST(ProceduralModels, SameArgumentsAndSeedGiveByteIdenticalMeshes) {
+  for (const ProceduralModel& m : procedural_gallery()) {
+    SCOPED_TRACE(m.name);
+    const PolyMesh a = build(m.name, {}, 12345), b = build(m.name, {}, 12345);
+    EXPECT_EQ(mesh_difference(a, b), "");
+    EXPECT_EQ(content_hash(a), content_hash(b));
+    const Mesh ta = mesh_procedural_model(m.name, {}, 12345), tb = mesh_procedural_model(m.name, {}, 12345);
+    ASSERT_EQ(ta.vertices.size(), tb.vertices.size());
+    ASSERT_EQ(ta.triangles.size(), tb.triangles.size());
+    EXPECT_EQ(std::memcmp(ta.vertices.data(), tb.vertices.data(), ta.vertices.size() * sizeof(ta.vertices[0])), 0);
+    EXPECT_EQ(std::memcmp(ta.triangles.data(), tb.triangles.data(), ta.triangles.size() * sizeof(ta.triangles[0])),
+              0);
+  }
+  // Named arguments in any order and explicit defaults give the same mesh (claims 2, 3).
+  EXPECT_EQ(mesh_difference(build("chair", {{"arms", true}, {"length", 2.5}}),
+                            build("chair", {{"length", 2.5}, {"arms", true}, {"segments", 6}})),
+            "");
+}
+
+TEST(ProceduralModels, BadParametersAreRefusedNamingProcedureAndParameter) {
+  struct Case {
+    std::string procedure;
+    NamedArgs args;
+    std::string parameter;
+  };
+  const std::vector<Case> cases = {
+      {"chair", {{"length", -1.0}}, "length"},
+      {"chair", {{"backLength", 0.0}}, "backLength"},
+      {"chair", {{"segments", 0}}, "segments"},
+      {"chair", {{"offSet", -3.0}}, "offSet"},
+      {"chair", {{"depth", std::nan("")}}, "depth"},
+      {"chair", {{"colour", 1.0}}, "colour"},       // not in the signature (the registry refuses)
+      {"chair", {{"arms", 1}}, "arms"},             // wrong type
+      {"couch", {{"numCushions", 0}}, "numCushions"},
+      {"table", {{"smoothingFactor", 2.0}}, "smoothingFactor"},
+      {"table", {{"roundTable", true}, {"segments", 2}}, "segments"},
+      {"luggage", {{"numLegs", -1}}, "numLegs"},
+      {"luggage", {{"numLegs", 2}, {"legColumns", 3}}, "legColumns"},
+      {"luggage", {{"width", HUGE_VAL}}, "width"},
+      {"leg", {{"smoothing", 1.5}}, "smoothing"},
+  };
+  for (const Case& c : cases) {
+    const std::string message = refusal([&] { build(c.procedure, c.args); });
+    EXPECT_NE(message.find("'" + c.procedure + "'"), std::string::npos) << c.procedure << ": " << message;
+    EXPECT_NE(message.find("'" + c.parameter + "'"), std::string::npos) << c.procedure << ": " << message;
+  }
+}
+
+// Claim 12: N identical cacheable leg calls (same arguments, inherited seed) record exactly 1
+// miss and N - 1 hits; claim 9: the mesh is the same bytes with the cache on and off.
+TEST(ProceduralModels, LuggageLegsCostOneMissAndNumLegsMinusOneHits) {
+  ProcedureRegistry registry;
+  register_procedural_models(registry);
+  for (int legs : {4, 12, 30}) {
+    SCOPED_TRACE("numLegs " + std::to_string(legs));
+    const NamedArgs args{{"numLegs", legs}};
+    registry.set_caching(false);
+    registry.clear_caches();
+    registry.reset_cache_stats("leg");
+    const PolyMesh uncached = registry.call("luggage", args, seeded(7));
+    EXPECT_EQ(registry.cache_stats("leg").misses, 0u);
+    EXPECT_EQ(registry.cache_stats("leg").hits, 0u);
+
+    registry.set_caching(true);
+    const PolyMesh cold = registry.call("luggage", args, seeded(7));
+    EXPECT_EQ(registry.cache_stats("leg").misses, 1u);
+    EXPECT_EQ(registry.cache_stats("leg").hits, static_cast<std::uint64_t>(legs - 1));
+    EXPECT_EQ(mesh_difference(cold, uncached), "");
+
+    // A second luggage with the same legs: all hits.
+    const PolyMesh warm = registry.call("luggage", args, seeded(7));
+    EXPECT_EQ(registry.cache_stats("leg").misses, 1u);
+    EXPECT_EQ(registry.cache_stats("leg").hits, static_cast<std::uint64_t>(2 * legs - 1));
+    EXPECT_EQ(mesh_difference(warm, uncached), "");
+
+    // Another seed is another key: one more miss.
+    registry.call("luggage", args, seeded(8));
+    EXPECT_EQ(registry.cache_stats("leg").misses, 2u);
+  }
+}
+
+// The chair's feet reuse the luggage's cacheable leg (thesis: the chair's #Leg): four calls,
+// one build.
+TEST(ProceduralModels, ChairFeetAreOneLegBuildAndThreeHits) {
+  ProcedureRegistry registry;
+  register_procedural_models(registry);
+  const PolyMesh chair = registry.call("chair", {{"feet", true}});
+  EXPECT_EQ(registry.cache_stats("leg").misses, 1u);
+  EXPECT_EQ(registry.cache_stats("leg").hits, 3u);
+  EXPECT_EQ(faces_labelled(chair, "legs").size(), 0u);
+  EXPECT_GT(faces_labelled(chair, "ankle").size(), 0u);
+  registry.set_caching(false);
+  EXPECT_EQ(mesh_difference(registry.call("chair", {{"feet", true}}), chair), "");
+}
+
+}  // namespace
+}  // namespace genmod::models
