@@ -1,7 +1,11 @@
 """Batch tessellation from Python: the local engine, and a Dask LocalCluster of two worker
 processes on loopback giving the same rows and byte-identical files, with a failing job
-reported, never dropped."""
+reported, never dropped, and a worker killed mid-job costing only a rerun (or, with no
+failures allowed, one error row)."""
 import filecmp
+import os
+import signal
+import threading
 
 import pytest
 
@@ -50,3 +54,50 @@ def test_dask_cluster_equals_the_local_batch(tmp_path):
             name = a["output"].rsplit("/", 1)[1]
             assert filecmp.cmp(local_dir / name, cluster_dir / name, shallow=False), name
     assert progress[-1] == 5
+
+
+SLOW = "\n".join(f"doorknob tolerance={t} out=slow_{k}.ply" for k, t in enumerate((1.0e-4, 1.05e-4, 1.1e-4, 1.15e-4)))
+
+
+def kill_a_worker_after(client, seconds):
+    """Starts a timer that SIGKILLs one worker process (the nanny starts a new one)."""
+    victim = sorted(client.run(os.getpid).values())[0]
+    timer = threading.Timer(seconds, os.kill, (victim, signal.SIGKILL))
+    timer.start()
+    return timer, victim
+
+
+def test_a_lost_worker_costs_nothing_but_a_rerun(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    local = batch.run(SLOW, tmp_path / "local", threads=2)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                  dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        timer, victim = kill_a_worker_after(client, 1.0)
+        remote = batch.run(SLOW, tmp_path / "cluster", client=client)
+        timer.join()
+        assert victim not in client.run(os.getpid).values()  # the worker really was lost
+    for a, b in zip(local, remote):
+        assert b["status"] == "ok" and {k: a[k] for k in COMPARED} == {k: b[k] for k in COMPARED}
+        name = a["output"].rsplit("/", 1)[1]
+        assert filecmp.cmp(tmp_path / "local" / name, tmp_path / "cluster" / name, shallow=False), name
+
+
+def test_a_job_whose_worker_dies_too_often_is_an_error_row(tmp_path):
+    distributed = pytest.importorskip("distributed")
+    import dask
+
+    # No second chance: the job running on the killed worker fails as KilledWorker.
+    with dask.config.set({"distributed.scheduler.allowed-failures": 0}), \
+            distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                     dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        timer, _ = kill_a_worker_after(client, 1.0)
+        rows = batch.run(SLOW, tmp_path, client=client)
+        timer.join()
+    # The jobs the scheduler had given the victim (running or queued there: at most 2 of the
+    # 4) fail; every other job is meshed; none is dropped.
+    assert len(rows) == 4
+    failed = [r for r in rows if r["status"] == "error"]
+    assert 1 <= len(failed) <= 2, [r["message"] for r in rows]
+    for r in failed:
+        assert "KilledWorker" in r["message"] and r["name"].startswith("doorknob") and not r["output"]
+    assert all(r["status"] == "ok" and r["valid"] for r in rows if r not in failed)

@@ -12,7 +12,7 @@ so a worker meshes exactly what was described, with the same C++ engine.
 
 Each row is a dict (name, output, status "ok"/"error", triangles, vertices, seconds,
 error_bound, limits_hit, valid, message), in job order. A job that fails (a bad parameter, a
-worker lost more often than `retries` allows) is an "error" row with the reason; none is
+worker lost more often than the scheduler allows) is an "error" row with the reason; none is
 dropped.
 """
 import os
@@ -42,8 +42,10 @@ def run(jobs, output_dir, client=None, threads=0, validate=True, retries=2, prog
 
     client: None runs on this machine's cores (threads, 0 = all); a distributed.Client sends
     each job to the cluster (output_dir must be reachable by the workers; on one machine it
-    is). retries: times a job is resubmitted when its worker dies. progress(done, total) is
-    called as jobs finish."""
+    is). retries: times a job that raised on a worker is resubmitted. A job whose worker dies
+    is rerun by the scheduler elsewhere, up to Dask's distributed.scheduler.allowed-failures
+    times (default 3); after that its row is an error naming KilledWorker. progress(done,
+    total) is called as jobs finish."""
     lines = parse(jobs)
     output_dir = os.path.abspath(str(output_dir))
     os.makedirs(output_dir, exist_ok=True)
