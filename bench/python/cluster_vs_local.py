@@ -24,7 +24,7 @@ patio_tile tolerance=0.002 out=tile.ply
 lamp_stand tolerance=0.002 out=lamp.ply
 circular_beam tolerance=0.002 out=beam.ply
 torus res=16:256:16 out=torus_{res}.ply
-sphere res=32:160:32 out=sphere_{res}.ply
+sphere res=32:160:5 out=sphere_{res}.ply
 """
 
 

@@ -2,6 +2,7 @@
 // (models/batch_jobs.hpp), so a worker process on another machine meshes exactly the job the
 // client described, with the same C++ engine as `genmod batch`.
 #include "bindings.hpp"
+#include "interruptible.hpp"
 
 #include "genmod/models/batch_jobs.hpp"
 #include "genmod/tessellate/batch.hpp"
@@ -41,14 +42,13 @@ void bind_batch(py::module_& m) {
                         bool validate) {
     std::vector<models::JobDescription> jobs;
     for (const std::string& line : lines) jobs.push_back(models::parse_job(line));
-    std::vector<BatchResult> rows;
-    {
-      py::gil_scoped_release unlocked;
-      BatchOptions options;
-      options.threads = threads;
-      options.validate = validate;
-      rows = run_batch(models::make_batch_jobs(jobs, output_dir), options);
-    }
+    BatchOptions options;
+    options.threads = threads;
+    options.validate = validate;
+    std::atomic<bool> cancel{false};
+    options.cancel = &cancel;
+    const std::vector<BatchResult> rows =
+        run_interruptible(cancel, [&] { return run_batch(models::make_batch_jobs(jobs, output_dir), options); });
     py::list out;
     for (const BatchResult& r : rows) out.append(row(r));
     return out;

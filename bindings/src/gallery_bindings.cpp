@@ -1,6 +1,7 @@
 // The model gallery from Python (genmod.gallery wraps these): the parametric and implicit
 // models with their parameters, built as Fn values and meshed adaptively.
 #include "bindings.hpp"
+#include "interruptible.hpp"
 
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
@@ -45,14 +46,12 @@ void bind_gallery(py::module_& m) {
       s.tolerance = tolerance;
       s.max_seconds = max_seconds;
       s.threads = threads;
-      ImplicitMesh r;
-      {
-        py::gil_scoped_release unlocked;
-        r = mesh_implicit(f, implicit->box, s);
-      }
+      std::atomic<bool> cancel{false};
+      s.cancel = &cancel;
+      const ImplicitMesh r = run_interruptible(cancel, [&] { return mesh_implicit(f, implicit->box, s); });
       info["distance_bound"] = r.stats.max_vertex_error;
       info["limits_hit"] = r.stats.limits_hit;
-      mesh = std::move(r.mesh);
+      mesh = r.mesh;
     } else {
       const models::Model& model = models::find_model(name);
       const models::ParameterValues p = models::resolve_parameters(model, params);
@@ -61,16 +60,14 @@ void bind_gallery(py::module_& m) {
       o.tolerance = tolerance > 0 ? tolerance : 1e-3 * models::model_extent(model, surface, p);
       o.max_seconds = max_seconds;
       o.threads = threads;
-      AdaptiveMesh r;
-      {
-        py::gil_scoped_release unlocked;
-        r = models::mesh_model_adaptive(model, surface, p, o);
-      }
+      std::atomic<bool> cancel{false};
+      o.cancel = &cancel;
+      const AdaptiveMesh r = run_interruptible(cancel, [&] { return models::mesh_model_adaptive(model, surface, p, o); });
       info["distance_bound"] = r.distance_bound;
       info["tolerance"] = o.tolerance;
       info["limits_hit"] = r.limits_hit;
       info["closed"] = r.closed();
-      mesh = std::move(r.mesh);
+      mesh = r.mesh;
     }
     return py::make_tuple(mesh, info);
   });

@@ -1,7 +1,8 @@
-// Long searches that Ctrl-C can stop. The search runs on its own thread with the GIL released
-// while the calling thread waits, checking Python's signals every 50 ms; on Ctrl-C it sets the
-// search's cancel flag (SearchLimits::cancel), waits for the search to stop at its next box and
-// raises KeyboardInterrupt, so nothing half-done is returned. C++ exceptions pass through.
+// Long C++ work that Ctrl-C can stop: searches, meshing and batches. The work runs on its own
+// thread with the GIL released while the calling thread waits, checking Python's signals every
+// 50 ms; on Ctrl-C it sets the work's cancel flag (SearchLimits::cancel, the meshers' and the
+// batch's `cancel`), waits for the work to stop at its next step and raises KeyboardInterrupt,
+// so nothing half-done is returned. C++ exceptions pass through.
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -16,7 +17,7 @@
 
 namespace genmod::python {
 
-// Runs search() (which must read `cancel` through its SearchLimits) and returns its result.
+// Runs search() (which must read `cancel` through its options) and returns its result.
 template <class Search>
 auto run_interruptible(std::atomic<bool>& cancel, Search&& search) -> decltype(search()) {
   std::optional<decltype(search())> result;

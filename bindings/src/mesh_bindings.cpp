@@ -2,6 +2,7 @@
 // report, previews (Mesh._repr_png_ shows a mesh in a notebook), the implicit mesher and the
 // continuation polygonizer.
 #include "bindings.hpp"
+#include "interruptible.hpp"
 
 #include "genmod/kernel/fn.hpp"
 #include "genmod/tessellate/continuation_polygonizer.hpp"
@@ -133,11 +134,9 @@ mesh.png() a shaded preview (a notebook shows a mesh through _repr_png_).)doc")
         s.max_seconds = max_seconds;
         s.threads = threads;
         const Box3 b = box_from(box);
-        ImplicitMesh result;
-        {
-          py::gil_scoped_release unlocked;
-          result = mesh_implicit(f, b, s);
-        }
+        std::atomic<bool> cancel{false};
+        s.cancel = &cancel;
+        const ImplicitMesh result = run_interruptible(cancel, [&] { return mesh_implicit(f, b, s); });
         py::dict stats;
         stats["max_vertex_error"] = result.stats.max_vertex_error;
         stats["uncertified_vertices"] = result.stats.uncertified_vertices;

@@ -139,7 +139,13 @@ std::vector<BatchResult> run_batch(const std::vector<BatchJob>& jobs, const Batc
         tbb::blocked_range<std::size_t>(0, jobs.size(), 1),
         [&](const tbb::blocked_range<std::size_t>& range) {
           for (std::size_t i = range.begin(); i != range.end(); ++i) {
-            rows[i] = run_job(jobs[i], options);
+            if (options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed)) {
+              rows[i].name = jobs[i].name;
+              rows[i].output = jobs[i].output;
+              rows[i].message = "cancelled before it ran";
+            } else {
+              rows[i] = run_job(jobs[i], options);
+            }
             if (options.progress) {
               const std::lock_guard<std::mutex> hold(progress_lock);
               options.progress(++done, jobs.size());

@@ -165,7 +165,7 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
   stats.full_tape_length = surface.value().size();
   const implicit::ClassifyContext classify{&frame, &settings, &surface.hessian(), min_level, max_cell_level};
   raster_detail::run_with_threads(settings.threads, "mesh_implicit", [&] {
-    Octree tree(surface, classify, deadline, stats);
+    Octree tree(surface, classify, deadline, settings.cancel, stats);
     stats.seconds_octree = seconds_since(start);
     if (settings.progress) settings.progress(0.2);
 
@@ -222,6 +222,9 @@ ImplicitMesh mesh_implicit(const ImplicitSurface& surface, const Box3& box, cons
         may_split = false;
       } else if (may_split && triangles > settings.max_triangles) {
         add_limit(stats, "triangles");
+        may_split = false;
+      } else if (may_split && settings.cancel != nullptr && settings.cancel->load(std::memory_order_relaxed)) {
+        add_limit(stats, "cancelled");
         may_split = false;
       } else if (may_split && std::chrono::steady_clock::now() > deadline) {
         add_limit(stats, "seconds");

@@ -49,3 +49,15 @@ def test_ctrl_c_stops_a_long_minimization():
                                                          epsilon=1e-14, delta=1e-300, max_boxes=10 ** 18,
                                                          time_limit=300))
     assert elapsed < 10
+
+
+def test_ctrl_c_stops_meshing_and_batches(tmp_path):
+    tangle = gm.load_vm(os.path.join(os.path.dirname(__file__), "..", "..", "data", "tanglecube.vm"))
+    box = np.array([[-2.5, 2.5]] * 3)
+    # min_feature 2e-4 would take minutes and gigabytes.
+    elapsed = interrupted_after(0.5, lambda: gm.mesh_implicit(tangle, box, min_feature=2e-4, tolerance=1e-5))
+    assert elapsed < 15
+    jobs = "\n".join(f"doorknob tolerance={1e-4 * (1 + k / 100)} out=knob_{k}.ply" for k in range(40))
+    elapsed = interrupted_after(0.5, lambda: gm.batch.run(jobs, tmp_path, threads=1))
+    assert elapsed < 15
+    assert len(list(tmp_path.iterdir())) < 40  # the jobs after the signal never ran

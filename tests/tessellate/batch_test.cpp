@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <filesystem>
@@ -181,6 +182,25 @@ TEST_F(Batch, TheThreadCountIsHowManyJobsRunAtOnce) {
   const int failed = (one[0].status == BatchStatus::Error) + (one[1].status == BatchStatus::Error);
   EXPECT_EQ(failed, 1);
   EXPECT_EQ(one[0].status == BatchStatus::Error ? one[0].message : one[1].message, "the other job did not start");
+}
+
+// Once the stop request is set, jobs not started are error rows; none is dropped.
+TEST_F(Batch, CancelledJobsAreErrorRows) {
+  std::atomic<bool> stop{false};
+  std::vector<BatchJob> jobs = mixed_jobs(dir_);
+  jobs[0].make = [&stop, make = jobs[0].make] {
+    stop = true;
+    return make();
+  };
+  const std::vector<BatchResult> rows = run_batch(jobs, {.threads = 1, .cancel = &stop});
+  ASSERT_EQ(rows.size(), jobs.size());
+  EXPECT_EQ(rows[0].status, BatchStatus::Ok);  // running when the request came: finished
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].status, BatchStatus::Error);
+    EXPECT_EQ(rows[i].name, jobs[i].name);
+    EXPECT_EQ(rows[i].message, "cancelled before it ran");
+    EXPECT_FALSE(fs::exists(jobs[i].output));
+  }
 }
 
 TEST_F(Batch, AFailedWriteIsTheJobsError) {

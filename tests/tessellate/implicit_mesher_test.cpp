@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <random>
 
@@ -261,6 +262,23 @@ TEST(ImplicitMesher, LimitsAreReported) {
   const MeshValidity w = validate(small.mesh);
   EXPECT_TRUE(w.valid()) << describe(w);
   EXPECT_LT(small.mesh.triangles.size(), mesh_implicit(f, cube_box(2.5), {.min_feature = 0.025}).mesh.triangles.size());
+}
+
+// A stop request (Python's Ctrl-C) stops refinement like a time limit: reported, and the mesh
+// made so far is still closed and valid.
+TEST(ImplicitMesher, CancellationIsReportedAndLeavesAValidMesh) {
+  const Fn f = load_vm(std::string(GENMOD_DATA_DIR) + "/tanglecube.vm");
+  std::atomic<bool> stop{false};
+  ImplicitMeshSettings s{.min_feature = 0.01, .cancel = &stop};
+  s.progress = [&](double done) {
+    if (done > 0.1) stop = true;  // the request comes while the octree is being refined
+  };
+  const ImplicitMesh m = mesh_implicit(f, cube_box(2.5), s);
+  ASSERT_FALSE(m.stats.limits_hit.empty());
+  EXPECT_EQ(m.stats.limits_hit[0], "cancelled");
+  const MeshValidity v = validate(m.mesh);
+  EXPECT_TRUE(v.valid()) << describe(v);
+  EXPECT_LT(m.mesh.triangles.size(), mesh_implicit(f, cube_box(2.5), {.min_feature = 0.025}).mesh.triangles.size());
 }
 
 TEST(ImplicitMesher, RejectsBadInput) {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -221,6 +222,18 @@ TEST(AdaptiveMesh, LimitsAreReported) {
   const AdaptiveMesh depth = mesh_adaptive({unit_sphere()}, {.tolerance = 1e-6, .max_depth = 4});
   EXPECT_NE(std::find(depth.limits_hit.begin(), depth.limits_hit.end(), "depth"), depth.limits_hit.end());
   EXPECT_GT(depth.distance_bound, 1e-6);
+  // The request comes while the kd-tree is refined (after 200 leaves were looked at).
+  std::atomic<bool> stop{false};
+  std::atomic<int> looked_at{0};
+  AdaptiveMeshOptions o{.tolerance = 1e-6, .cancel = &stop};
+  o.refine = [&](std::size_t, const Interval&, const Interval&) {
+    if (++looked_at > 200) stop = true;
+    return false;
+  };
+  const AdaptiveMesh cancelled = mesh_adaptive({unit_sphere()}, o);
+  EXPECT_NE(std::find(cancelled.limits_hit.begin(), cancelled.limits_hit.end(), "cancelled"), cancelled.limits_hit.end());
+  EXPECT_GT(cancelled.distance_bound, 1e-6);
+  EXPECT_TRUE(cancelled.closed());
 }
 
 TEST(AdaptiveMesh, BadInputIsRejectedWithAMessage) {

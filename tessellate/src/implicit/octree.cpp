@@ -145,13 +145,17 @@ Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext&
 }  // namespace
 
 Octree::Octree(const ImplicitSurface& surface, const ClassifyContext& context,
-               std::chrono::steady_clock::time_point deadline, ImplicitMeshStats& stats)
+               std::chrono::steady_clock::time_point deadline, const std::atomic<bool>* cancel,
+               ImplicitMeshStats& stats)
     : context_(context) {
   cells_.push_back(Cell{});
   std::vector<Pending> pending{{0, {surface.value(), surface.gradient()}}};
   bool timed_out = false;
   while (!pending.empty()) {
-    if (!timed_out && std::chrono::steady_clock::now() > deadline) {
+    if (!timed_out && cancel != nullptr && cancel->load(std::memory_order_relaxed)) {
+      timed_out = true;
+      stats.limits_hit.emplace_back("cancelled");
+    } else if (!timed_out && std::chrono::steady_clock::now() > deadline) {
       timed_out = true;
       stats.limits_hit.emplace_back("seconds");
     }

@@ -8,6 +8,7 @@
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "implicit/frame.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <vector>
@@ -51,9 +52,10 @@ struct ClassifyWorker {
 
 class Octree {
  public:
-  // Builds the octree down to the settings' limits. `deadline` (if not max) stops splitting.
+  // Builds the octree down to the settings' limits. `deadline` (if not max) and `cancel`
+  // (if set and true) stop splitting.
   Octree(const ImplicitSurface& surface, const ClassifyContext& context,
-         std::chrono::steady_clock::time_point deadline, ImplicitMeshStats& stats);
+         std::chrono::steady_clock::time_point deadline, const std::atomic<bool>* cancel, ImplicitMeshStats& stats);
 
   const std::vector<Cell>& cells() const noexcept { return cells_; }
   const Cell& cell(std::uint32_t i) const noexcept { return cells_[i]; }

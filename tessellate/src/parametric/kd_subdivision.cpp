@@ -131,9 +131,11 @@ Subdivision subdivide(const std::vector<CompiledPatch>& patches, const AdaptiveM
     const bool over_leaves = leaf_count + level.size() + splits > options.max_leaves;
     const bool over_time =
         options.max_seconds > 0.0 && std::chrono::duration<double>(Clock::now() - start).count() > options.max_seconds;
+    const bool cancelled = options.cancel != nullptr && options.cancel->load(std::memory_order_relaxed);
     if (splits > 0 && over_leaves) out.limits_hit.push_back("leaves");
     if (splits > 0 && over_time && !over_leaves) out.limits_hit.push_back("time");
-    const bool stop = over_leaves || over_time;
+    if (splits > 0 && cancelled && !over_leaves && !over_time) out.limits_hit.push_back("cancelled");
+    const bool stop = over_leaves || over_time || cancelled;
     std::vector<Node> next;
     next.reserve(stop ? 0 : 2 * splits);
     for (std::size_t i = 0; i < level.size(); ++i) {

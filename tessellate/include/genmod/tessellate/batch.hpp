@@ -37,6 +37,7 @@
 #include "genmod/tessellate/mesh.hpp"
 
 #include <cstddef>
+#include <atomic>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -89,6 +90,9 @@ struct BatchOptions {
   // Called after each job with (jobs done, total), never concurrently (under a lock), from
   // whichever thread finished the job; keep it short. Also called once with (0, total).
   std::function<void(std::size_t done, std::size_t total)> progress = nullptr;
+  // The caller's stop request (not owned; null = none): once it is true, jobs not yet started
+  // are not run (their rows are errors saying "cancelled before it ran"); running jobs finish.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 // Runs every job; the rows are in job order. std::invalid_argument (before any job runs) for

@@ -34,6 +34,7 @@
 #include "genmod/tessellate/mesh.hpp"
 
 #include <array>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -83,6 +84,9 @@ struct ImplicitMeshSettings {
   std::size_t max_memory = std::size_t{8} << 30;
   std::size_t max_triangles = 100'000'000;
   double max_seconds = 0.0;  // 0 = no time limit
+  // The caller's stop request (not owned; null = none): when it becomes true the mesher stops
+  // splitting, as when time is up, and reports "cancelled". Python's Ctrl-C sets it.
+  const std::atomic<bool>* cancel = nullptr;
   int threads = 0;           // 0 = all cores
   // Called now and then with the fraction done (0..1), from the calling thread.
   std::function<void(double)> progress = nullptr;
@@ -111,7 +115,7 @@ struct ImplicitMeshStats {
   std::size_t uncertified_vertices = 0;  // vertices without a sign-change bracket within tolerance
   double mean_tape_length = 0.0;         // of the pruned tapes of surface cells
   std::size_t full_tape_length = 0;
-  std::vector<std::string> limits_hit;   // "cells", "memory", "triangles", "seconds", "rounds"
+  std::vector<std::string> limits_hit;   // "cells", "memory", "triangles", "seconds", "rounds", "cancelled"
   double seconds_octree = 0.0, seconds_mesh = 0.0, seconds_assemble = 0.0;
 };
 

@@ -44,6 +44,7 @@
 #include "genmod/kernel/tape.hpp"
 #include "genmod/tessellate/mesh.hpp"
 
+#include <atomic>
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -66,7 +67,8 @@ enum class LeafBound {
 struct AdaptiveMeshOptions {
   double tolerance = 1e-3;  // largest distance between mesh and surface (> 0)
   LeafBound bound = LeafBound::Best;
-  // Limits, reported in AdaptiveMesh::limits_hit when reached ("depth", "leaves", "time").
+  // Limits, reported in AdaptiveMesh::limits_hit when reached ("depth", "leaves", "time",
+  // "cancelled").
   int max_depth = 24;                 // splits per parameter axis (a leaf is >= 2^-24 of the range)
   // Where the interval bounds are not finite (an operator without a finite enclosure there),
   // splitting may never give a bound: such leaves are split to this depth per axis only,
@@ -74,6 +76,9 @@ struct AdaptiveMeshOptions {
   int unbounded_depth = 8;
   std::size_t max_leaves = 4'000'000;  // over all patches
   double max_seconds = 0.0;           // 0: no time limit
+  // The caller's stop request (not owned; null = none): when it becomes true splitting stops,
+  // as when time is up, reported as "cancelled". Python's Ctrl-C sets it.
+  const std::atomic<bool>* cancel = nullptr;
   bool glue_edges = true;             // find edges that coincide or collapse (see above)
   double glue_tolerance = 1e-9;       // relative to the surface's extent
   int threads = 0;                    // 0: all cores
