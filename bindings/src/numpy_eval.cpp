@@ -40,7 +40,67 @@ struct ColumnTape {
   std::size_t columns;
 };
 
-py::array evaluate(const ColumnTape& t, const Array& points) {
+// A 2-D view of doubles: element (i, k) at data[i * row + k * col] (strides in elements).
+struct View {
+  double* data;
+  std::ptrdiff_t row, col;
+};
+
+View view_of(const py::array& a, bool single) {
+  const auto step = [&](int axis) { return static_cast<std::ptrdiff_t>(a.strides(axis) / static_cast<py::ssize_t>(sizeof(double))); };
+  return {static_cast<double*>(const_cast<void*>(a.data())), single ? 0 : step(0), step(single ? 0 : 1)};
+}
+
+// Points as doubles, in their own layout when they already are doubles (C- or Fortran-ordered
+// or any strided view), otherwise converted.
+py::array points_array(const py::object& points) {
+  if (py::isinstance<py::array>(points)) {
+    py::array a = py::reinterpret_borrow<py::array>(points);
+    if (a.dtype().is(py::dtype::of<double>()) && a.strides(0) % static_cast<py::ssize_t>(sizeof(double)) == 0 &&
+        (a.ndim() != 2 || a.strides(1) % static_cast<py::ssize_t>(sizeof(double)) == 0))
+      return a;
+  }
+  Array converted = Array::ensure(points);
+  if (!converted) throw std::invalid_argument("genmod: points must be an array of numbers");
+  return converted;
+}
+
+// Evaluates the rows of `in` (count x n) into the rows of `out` (count x m). Columns that are
+// contiguous (a Fortran-ordered array, or a single output) are read and written in place;
+// others go through small structure-of-arrays blocks that stay in cache.
+void evaluate_into(const Tape& tape, View in, std::size_t n, View out, std::size_t m, std::size_t count) {
+  constexpr std::size_t kBlock = 4096;
+  const bool direct_in = in.row == 1 || count == 1, direct_out = out.row == 1 || count == 1;
+  std::vector<double> in_block(direct_in ? 0 : n * kBlock), out_block(direct_out ? 0 : m * kBlock);
+  std::vector<const double*> ins(n);
+  std::vector<double*> outs(m);
+  BatchEvaluator ev;
+  for (std::size_t start = 0; start < count; start += kBlock) {
+    const std::size_t b = std::min(kBlock, count - start);
+    const auto at = [](View v, std::size_t i, std::size_t k) {
+      return v.data + static_cast<std::ptrdiff_t>(i) * v.row + static_cast<std::ptrdiff_t>(k) * v.col;
+    };
+    if (!direct_in && in.col == 1) {
+      // Rows of a C-ordered array: each row is read once, in order.
+      for (std::size_t i = 0; i < b; ++i) {
+        const double* r = at(in, start + i, 0);
+        for (std::size_t k = 0; k < n; ++k) in_block[k * kBlock + i] = r[k];
+      }
+    } else if (!direct_in) {
+      for (std::size_t k = 0; k < n; ++k)
+        for (std::size_t i = 0; i < b; ++i) in_block[k * kBlock + i] = *at(in, start + i, k);
+    }
+    for (std::size_t k = 0; k < n; ++k) ins[k] = direct_in ? at(in, start, k) : in_block.data() + k * kBlock;
+    for (std::size_t j = 0; j < m; ++j) outs[j] = direct_out ? at(out, start, j) : out_block.data() + j * kBlock;
+    ev.eval(tape, ins, b, outs);
+    if (!direct_out)
+      for (std::size_t i = 0; i < b; ++i)
+        for (std::size_t j = 0; j < m; ++j) *at(out, start + i, j) = out_block[j * kBlock + i];
+  }
+}
+
+py::array evaluate(const ColumnTape& t, const py::object& points_object, const py::object& out_object) {
+  const py::array points = points_array(points_object);
   if (points.ndim() != 1 && points.ndim() != 2)
     throw std::invalid_argument("genmod: points must be an array of shape (n,) or (N, n), got " +
                                 std::to_string(points.ndim()) + " dimensions");
@@ -51,32 +111,32 @@ py::array evaluate(const ColumnTape& t, const Array& points) {
     throw std::invalid_argument("genmod: the points have " + std::to_string(n) + " columns, the tape " +
                                 std::to_string(t.columns));
   const std::size_t m = t.tape.num_outputs();
-  py::array_t<double> result = single ? py::array_t<double>({static_cast<py::ssize_t>(m)})
-                                      : py::array_t<double>({static_cast<py::ssize_t>(count), static_cast<py::ssize_t>(m)});
-  const double* p = points.data();
-  double* r = result.mutable_data();
-  {
-    // Blocks of points go through small structure-of-arrays buffers that stay in cache, so
-    // the rows are read once and the results written once (a whole-array transpose each way
-    // cost as much as the evaluation of a cheap function).
+  const auto N = static_cast<py::ssize_t>(count), M = static_cast<py::ssize_t>(m);
+  py::array result;
+  if (!out_object.is_none()) {
+    // The caller's array (no allocation: a loop over many batches reuses one).
+    if (!py::isinstance<py::array>(out_object)) throw std::invalid_argument("genmod: out must be a numpy array");
+    result = py::reinterpret_borrow<py::array>(out_object);
+    const bool shape_ok = single ? result.ndim() == 1 && result.shape(0) == M
+                                 : result.ndim() == 2 && result.shape(0) == N && result.shape(1) == M;
+    if (!shape_ok)
+      throw std::invalid_argument("genmod: out must have shape " + (single ? "(" + std::to_string(m) + ",)"
+                                  : "(" + std::to_string(count) + ", " + std::to_string(m) + ")"));
+    if (!result.dtype().is(py::dtype::of<double>()) || !result.writeable() ||
+        result.strides(0) % static_cast<py::ssize_t>(sizeof(double)) != 0 ||
+        (!single && result.strides(1) % static_cast<py::ssize_t>(sizeof(double)) != 0))
+      throw std::invalid_argument("genmod: out must be a writeable array of float64");
+  } else if (single) {
+    result = py::array_t<double>(M);
+  } else if (points.flags() & py::array::f_style) {
+    result = py::array_t<double, py::array::f_style>({N, M});  // columns in, columns out
+  } else {
+    result = py::array_t<double>({N, M});
+  }
+  const View in = view_of(points, single), out = view_of(result, single);
+  if (count > 0) {
     py::gil_scoped_release unlocked;
-    constexpr std::size_t kBlock = 4096;
-    std::vector<double> in(n * kBlock), out(m * kBlock);
-    std::vector<const double*> ins(n);
-    std::vector<double*> outs(m);
-    BatchEvaluator ev;
-    for (std::size_t start = 0; start < count; start += kBlock) {
-      const std::size_t b = std::min(kBlock, count - start);
-      for (std::size_t i = 0; i < b; ++i)
-        for (std::size_t k = 0; k < n; ++k) in[k * kBlock + i] = p[(start + i) * n + k];
-      for (std::size_t k = 0; k < n; ++k) ins[k] = in.data() + k * kBlock;
-      // One output: its row-major result is already a column, so write it in place.
-      for (std::size_t j = 0; j < m; ++j) outs[j] = m == 1 ? r + start : out.data() + j * kBlock;
-      ev.eval(t.tape, ins, b, outs);
-      if (m != 1)
-        for (std::size_t i = 0; i < b; ++i)
-          for (std::size_t j = 0; j < m; ++j) r[(start + i) * m + j] = out[j * kBlock + i];
-    }
+    evaluate_into(t.tape, in, n, out, m, count);
   }
   return result;
 }
@@ -96,23 +156,27 @@ void bind_evaluation(py::module_& m) {
   py::class_<ColumnTape>(m, "Tape", R"doc(A function compiled once for evaluation over the coordinates x(0) .. x(n-1).
 
 tape(points) evaluates an (N, n) array (column k is x(k)) to an (N, m) array, or an (n,)
-point to (m,); tape.bound(box) encloses every value over an (n, 2) box to an (m, 2) array.)doc")
+point to (m,); tape(points, out=a) writes into a float64 array a of that shape instead of a new
+one. Any layout is read as it is: a Fortran-ordered array (contiguous columns) is evaluated in
+place and gives a Fortran-ordered result. tape.bound(box) encloses every value over an (n, 2)
+box to an (m, 2) array.)doc")
       .def(py::init<const Fn&, std::size_t>(), py::arg("f"), py::arg("n"))
       .def_property_readonly("n", [](const ColumnTape& t) { return t.columns; })
       .def_property_readonly("m", [](const ColumnTape& t) { return t.tape.num_outputs(); })
       .def_property_readonly("size", [](const ColumnTape& t) { return t.tape.size(); }, "The number of clauses.")
-      .def("__call__", &evaluate, py::arg("points"))
+      .def("__call__", &evaluate, py::arg("points"), py::arg("out") = py::none())
       .def("bound", &bound, py::arg("box"));
 
   auto fn = py::reinterpret_borrow<py::class_<Fn>>(m.attr("Fn"));
   // The number of coordinates a points array (last axis) or a box (rows) gives.
-  auto columns_of = [](const Array& a, bool is_box) -> std::size_t {
+  auto columns_of = [](const py::array& a, bool is_box) -> std::size_t {
     if (is_box) return a.ndim() >= 1 ? static_cast<std::size_t>(a.shape(0)) : 0;
     return static_cast<std::size_t>(a.ndim() == 1 ? a.shape(0) : a.ndim() == 2 ? a.shape(1) : 0);
   };
-  fn.def("__call__", [columns_of](const Fn& f, const Array& points) {
-        return evaluate(ColumnTape(f, columns_of(points, false)), points);
-      }, py::arg("points"),
+  fn.def("__call__", [columns_of](const Fn& f, const py::object& points, const py::object& out) {
+        const py::array a = points_array(points);
+        return evaluate(ColumnTape(f, columns_of(a, false)), a, out);
+      }, py::arg("points"), py::arg("out") = py::none(),
       "Values at an (N, n) array of points (column k is x(k)) as (N, m); compiles a tape each call (use genmod.Tape for repeated calls).")
       .def("bound", [columns_of](const Fn& f, const Array& box) {
         return bound(ColumnTape(f, columns_of(box, true)), box);

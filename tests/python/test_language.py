@@ -85,3 +85,25 @@ def test_functions_are_dropped_with_their_python_objects():
         f(np.array([0.1, 0.2]))
     del f
     assert gm.live_nodes() == before
+
+
+def test_every_layout_and_out_array_give_the_same_bits():
+    rng = np.random.default_rng(3)
+    points = rng.uniform(-2, 2, size=(10000, 3))
+    f = gm.cat([random_function(rng, 4), random_function(rng, 3)])
+    tape = gm.Tape(f, 3)
+    expected = tape(points)
+    fortran = tape(np.asfortranarray(points))
+    assert fortran.flags.f_contiguous and fortran.tobytes(order="C") == expected.tobytes()
+    assert tape(points[::3]).tobytes() == expected[::3].tobytes()  # a strided view, read in place
+    assert tape(points.astype(np.float32)).shape == (10000, 2)  # converted
+    out = np.full((10000, 2), np.nan)
+    assert tape(points, out=out) is out and out.tobytes() == expected.tobytes()
+    out_f = np.asfortranarray(np.zeros((10000, 2)))
+    tape(np.asfortranarray(points), out=out_f)
+    assert out_f.tobytes(order="C") == expected.tobytes()
+    with pytest.raises(ValueError, match=r"out must have shape \(10000, 2\)"):
+        tape(points, out=np.zeros((10000, 1)))
+    with pytest.raises(ValueError, match="float64"):
+        tape(points, out=np.zeros((10000, 2), dtype=np.float32))
+    assert tape(np.zeros((0, 3))).shape == (0, 2)
