@@ -14,4 +14,5 @@ PYBIND11_MODULE(_genmod, m) {
   genmod::python::bind_mesh(m);
   genmod::python::bind_gallery(m);
   genmod::python::bind_batch(m);
+  genmod::python::bind_procedural(m);
 }

@@ -13,4 +13,4 @@ interval enclosure.
 """
 from ._genmod import *  # noqa: F401,F403
 from ._genmod import Fn, Mesh, Tape, x  # noqa: F401
-from . import batch, gallery  # noqa: F401
+from . import batch, gallery, procedural  # noqa: F401

@@ -1,0 +1,65 @@
+"""Morkel's procedural models: registered procedures with typed parameters, each with a
+default, called with named arguments and a seed; the same arguments and seed give the same
+mesh, and cacheable procedures (the Luggage's legs) are built once per distinct call.
+
+    from genmod import procedural
+    [m.name for m in procedural.models()]           # leg, chair, couch, table, luggage, ...
+    chair = procedural.mesh("chair", arms=True, backLength=2.0)
+    luggage = procedural.mesh("luggage", seed=3, numLegs=12)
+    procedural.cache_stats("leg")                    # {'hits': 11, 'misses': 1, ...}
+"""
+from dataclasses import dataclass
+
+from . import _genmod
+
+
+@dataclass(frozen=True)
+class Parameter:
+    name: str
+    type: str  # "Double", "Integer", "Boolean", "String" or "Vector" (the thesis's Java types)
+    default: object
+    doc: str
+
+
+@dataclass(frozen=True)
+class Model:
+    name: str
+    description: str
+    signature: str  # the thesis's signature string, e.g. "OUT:Double,height:Integer,numLegs"
+    parameters: tuple
+    cacheable: bool
+
+
+def models():
+    """Every procedural model, in the gallery's order."""
+    return [Model(name, doc, sig, tuple(Parameter(*p) for p in params), cacheable)
+            for name, doc, sig, params, cacheable in _genmod._procedural_models()]
+
+
+def mesh(name, seed=0, **params):
+    """The model's triangle mesh (z up) with the given parameters (the others keep their
+    defaults). ValueError names the procedure and the parameter of a bad value."""
+    return _genmod._mesh_procedural(name, params, int(seed))
+
+
+def cache_stats(name):
+    """Hits, misses, evictions and entries of a procedure's cache."""
+    return _genmod._procedural_cache(name)
+
+
+def set_caching(on):
+    """Switches every procedure cache on or off (the meshes are the same either way)."""
+    _genmod._set_procedural_caching(bool(on))
+
+
+def caching():
+    return _genmod._procedural_caching()
+
+
+def clear_caches():
+    """Drops every cached model; the counters stay."""
+    _genmod._clear_procedural_caches()
+
+
+def reset_cache_stats(name):
+    _genmod._reset_procedural_cache_stats(name)
