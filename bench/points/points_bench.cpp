@@ -1,6 +1,7 @@
 // The C++ side of the Python overhead benchmark (bench/python/numpy_overhead.py): a model
-// evaluated at N random points of its box by the batch evaluator, from structure-of-arrays
-// inputs in one call, as a C++ user would. Prints the median CPU seconds per pass.
+// evaluated at N random points of its box by the batch evaluator in one call, as a C++ user
+// would, from three separate coordinate arrays and from one row-major (N, 3) array read with
+// strides. Prints the median CPU seconds per pass of each, on one line.
 //
 // Usage: genmod_points_bench MODEL.vm N REPEATS
 #include "genmod/kernel/batch_evaluator.hpp"
@@ -37,19 +38,30 @@ int main(int argc, char** argv) try {
   const Tape tape(f, std::vector<int>{0, 1, 2});
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> coord(-2.5, 2.5);
-  std::vector<double> xs(n), ys(n), zs(n), out(n);
-  for (std::size_t i = 0; i < n; ++i) xs[i] = coord(rng), ys[i] = coord(rng), zs[i] = coord(rng);
-  const double* in[] = {xs.data(), ys.data(), zs.data()};
+  std::vector<double> xs(n), ys(n), zs(n), rows(3 * n), out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    xs[i] = rows[3 * i] = coord(rng);
+    ys[i] = rows[3 * i + 1] = coord(rng);
+    zs[i] = rows[3 * i + 2] = coord(rng);
+  }
+  const double* columns[] = {xs.data(), ys.data(), zs.data()};
+  const double* row_major[] = {rows.data(), rows.data() + 1, rows.data() + 2};
   double* o[] = {out.data()};
   BatchEvaluator ev;
-  std::vector<double> seconds;
+  std::vector<double> by_columns, by_rows;
   for (int r = 0; r < repeats; ++r) {
-    const double start = cpu_seconds();
-    ev.eval(tape, in, n, o);
-    seconds.push_back(cpu_seconds() - start);
+    double start = cpu_seconds();
+    ev.eval(tape, columns, n, o);
+    by_columns.push_back(cpu_seconds() - start);
+    start = cpu_seconds();
+    ev.eval(tape, row_major, n, o, 3, 1);
+    by_rows.push_back(cpu_seconds() - start);
   }
-  std::sort(seconds.begin(), seconds.end());
-  std::printf("%.9f\n", seconds[seconds.size() / 2]);
+  const auto median = [](std::vector<double>& v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+  };
+  std::printf("%.9f %.9f\n", median(by_columns), median(by_rows));
   return 0;
 } catch (const std::exception& e) {
   std::fprintf(stderr, "genmod_points_bench: %s\n", e.what());

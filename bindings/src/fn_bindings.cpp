@@ -87,7 +87,8 @@ are NaN at points and flagged in bounds.)doc");
   py::implicitly_convertible<int, Fn>();
 
   // A malformed or unreadable model file: a ValueError (genmod.VmFormatError) naming the line.
-  py::register_exception<VmFormatError>(m, "VmFormatError", PyExc_ValueError);
+  py::register_exception<VmFormatError>(m, "VmFormatError", PyExc_ValueError).doc() =
+      "A malformed or unreadable .vm model file; the message names the line.";
   m.def("load_vm", [](const std::string& path) { return load_vm(path); }, py::arg("path"),
         "Reads a .vm model file (x, y, z are x(0), x(1), x(2)); genmod.VmFormatError (a ValueError) names the line of a malformed file.");
   m.def("save_vm", [](const Fn& f, const std::string& path) { save_vm(path, f); }, py::arg("f"), py::arg("path"),
@@ -114,10 +115,10 @@ are NaN at points and flagged in bounds.)doc");
       {"abs", &abs}, {"floor", &floor}, {"ceil", &ceil}, {"is_error", &is_error}};
   for (const auto& [name, f] : unary)
     m.def(name, f, py::arg("f"), (std::string(name) + "(f), componentwise.").c_str());
-  m.def("pow", [](const Fn& a, const Fn& b) { return pow(a, b); }, py::arg("a"), py::arg("b"));
-  m.def("atan2", [](const Fn& y, const Fn& x) { return atan2(y, x); }, py::arg("y"), py::arg("x"));
-  m.def("min", [](const Fn& a, const Fn& b) { return min(a, b); }, py::arg("a"), py::arg("b"));
-  m.def("max", [](const Fn& a, const Fn& b) { return max(a, b); }, py::arg("a"), py::arg("b"));
+  m.def("pow", [](const Fn& a, const Fn& b) { return pow(a, b); }, py::arg("a"), py::arg("b"), "a ** b.");
+  m.def("atan2", [](const Fn& y, const Fn& x) { return atan2(y, x); }, py::arg("y"), py::arg("x"), "The angle of (x, y), in (-pi, pi].");
+  m.def("min", [](const Fn& a, const Fn& b) { return min(a, b); }, py::arg("a"), py::arg("b"), "The smaller of a and b (CSG union of implicit shapes).");
+  m.def("max", [](const Fn& a, const Fn& b) { return max(a, b); }, py::arg("a"), py::arg("b"), "The larger of a and b (CSG intersection of implicit shapes).");
   m.def("select", [](const Fn& c, const Fn& t, const Fn& e) { return select(c, t, e); }, py::arg("cond"),
         py::arg("then"), py::arg("otherwise"), "if-then-else: cond is scalar (nonzero is true).");
   m.def("derivative", [](const Fn& f, int i) { return derivative(f, i); }, py::arg("f"), py::arg("i"),

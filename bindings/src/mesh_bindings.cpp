@@ -124,7 +124,8 @@ mesh.png() a shaded preview (a notebook shows a mesh through _repr_png_).)doc")
       })
       .def("png", &png_of, py::arg("size") = 512, "A shaded preview as PNG bytes.")
       .def("_repr_png_", [](const Mesh& mesh) { return png_of(mesh, 384); });
-  m.def("read_mesh", [](const std::filesystem::path& path) { return read_mesh(path); }, py::arg("path"));
+  m.def("read_mesh", [](const std::filesystem::path& path) { return read_mesh(path); }, py::arg("path"),
+        "Reads an OBJ, PLY, STL or OFF mesh file (the format from the extension).");
 
   m.def("mesh_implicit", [](const Fn& f, const py::array_t<double, py::array::c_style | py::array::forcecast>& box,
                             double min_feature, double tolerance, double max_seconds, int threads) {

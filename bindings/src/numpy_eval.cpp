@@ -48,55 +48,37 @@ struct View {
 
 View view_of(const py::array& a, bool single) {
   const auto step = [&](int axis) { return static_cast<std::ptrdiff_t>(a.strides(axis) / static_cast<py::ssize_t>(sizeof(double))); };
-  return {static_cast<double*>(const_cast<void*>(a.data())), single ? 0 : step(0), step(single ? 0 : 1)};
+  return {static_cast<double*>(const_cast<void*>(a.data())), single ? 1 : step(0), step(single ? 0 : 1)};
 }
 
-// Points as doubles, in their own layout when they already are doubles (C- or Fortran-ordered
-// or any strided view), otherwise converted.
+// Strides the batch evaluator reads in place: whole elements, forward.
+bool usable_strides(const py::array& a) {
+  for (py::ssize_t axis = 0; axis < a.ndim(); ++axis)
+    if (a.strides(axis) <= 0 || a.strides(axis) % static_cast<py::ssize_t>(sizeof(double)) != 0) return false;
+  return true;
+}
+
+// Points as doubles, in their own layout when they already are doubles with forward strides
+// (C- or Fortran-ordered, or a strided view), otherwise converted to a C-ordered copy.
 py::array points_array(const py::object& points) {
   if (py::isinstance<py::array>(points)) {
     py::array a = py::reinterpret_borrow<py::array>(points);
-    if (a.dtype().is(py::dtype::of<double>()) && a.strides(0) % static_cast<py::ssize_t>(sizeof(double)) == 0 &&
-        (a.ndim() != 2 || a.strides(1) % static_cast<py::ssize_t>(sizeof(double)) == 0))
-      return a;
+    if (a.dtype().is(py::dtype::of<double>()) && usable_strides(a)) return a;
   }
   Array converted = Array::ensure(points);
   if (!converted) throw std::invalid_argument("genmod: points must be an array of numbers");
   return converted;
 }
 
-// Evaluates the rows of `in` (count x n) into the rows of `out` (count x m). Columns that are
-// contiguous (a Fortran-ordered array, or a single output) are read and written in place;
-// others go through small structure-of-arrays blocks that stay in cache.
+// Evaluates the rows of `in` (count x n) into the rows of `out` (count x m) in place: column k
+// of the input starts at in.data + k * in.col and steps by in.row (1 for a Fortran-ordered
+// array, n for a C-ordered one), and likewise for the output.
 void evaluate_into(const Tape& tape, View in, std::size_t n, View out, std::size_t m, std::size_t count) {
-  constexpr std::size_t kBlock = 4096;
-  const bool direct_in = in.row == 1 || count == 1, direct_out = out.row == 1 || count == 1;
-  std::vector<double> in_block(direct_in ? 0 : n * kBlock), out_block(direct_out ? 0 : m * kBlock);
   std::vector<const double*> ins(n);
   std::vector<double*> outs(m);
-  BatchEvaluator ev;
-  for (std::size_t start = 0; start < count; start += kBlock) {
-    const std::size_t b = std::min(kBlock, count - start);
-    const auto at = [](View v, std::size_t i, std::size_t k) {
-      return v.data + static_cast<std::ptrdiff_t>(i) * v.row + static_cast<std::ptrdiff_t>(k) * v.col;
-    };
-    if (!direct_in && in.col == 1) {
-      // Rows of a C-ordered array: each row is read once, in order.
-      for (std::size_t i = 0; i < b; ++i) {
-        const double* r = at(in, start + i, 0);
-        for (std::size_t k = 0; k < n; ++k) in_block[k * kBlock + i] = r[k];
-      }
-    } else if (!direct_in) {
-      for (std::size_t k = 0; k < n; ++k)
-        for (std::size_t i = 0; i < b; ++i) in_block[k * kBlock + i] = *at(in, start + i, k);
-    }
-    for (std::size_t k = 0; k < n; ++k) ins[k] = direct_in ? at(in, start, k) : in_block.data() + k * kBlock;
-    for (std::size_t j = 0; j < m; ++j) outs[j] = direct_out ? at(out, start, j) : out_block.data() + j * kBlock;
-    ev.eval(tape, ins, b, outs);
-    if (!direct_out)
-      for (std::size_t i = 0; i < b; ++i)
-        for (std::size_t j = 0; j < m; ++j) *at(out, start + i, j) = out_block[j * kBlock + i];
-  }
+  for (std::size_t k = 0; k < n; ++k) ins[k] = in.data + static_cast<std::ptrdiff_t>(k) * in.col;
+  for (std::size_t j = 0; j < m; ++j) outs[j] = out.data + static_cast<std::ptrdiff_t>(j) * out.col;
+  BatchEvaluator().eval(tape, ins, count, outs, static_cast<std::size_t>(in.row), static_cast<std::size_t>(out.row));
 }
 
 py::array evaluate(const ColumnTape& t, const py::object& points_object, const py::object& out_object) {
@@ -122,10 +104,8 @@ py::array evaluate(const ColumnTape& t, const py::object& points_object, const p
     if (!shape_ok)
       throw std::invalid_argument("genmod: out must have shape " + (single ? "(" + std::to_string(m) + ",)"
                                   : "(" + std::to_string(count) + ", " + std::to_string(m) + ")"));
-    if (!result.dtype().is(py::dtype::of<double>()) || !result.writeable() ||
-        result.strides(0) % static_cast<py::ssize_t>(sizeof(double)) != 0 ||
-        (!single && result.strides(1) % static_cast<py::ssize_t>(sizeof(double)) != 0))
-      throw std::invalid_argument("genmod: out must be a writeable array of float64");
+    if (!result.dtype().is(py::dtype::of<double>()) || !result.writeable() || !usable_strides(result))
+      throw std::invalid_argument("genmod: out must be a writeable array of float64 with forward strides");
   } else if (single) {
     result = py::array_t<double>(M);
   } else if (points.flags() & py::array::f_style) {
@@ -157,8 +137,8 @@ void bind_evaluation(py::module_& m) {
 
 tape(points) evaluates an (N, n) array (column k is x(k)) to an (N, m) array, or an (n,)
 point to (m,); tape(points, out=a) writes into a float64 array a of that shape instead of a new
-one. Any layout is read as it is: a Fortran-ordered array (contiguous columns) is evaluated in
-place and gives a Fortran-ordered result. tape.bound(box) encloses every value over an (n, 2)
+one. Any float64 layout with forward strides is read in place (no copy); a Fortran-ordered
+input gives a Fortran-ordered result. tape.bound(box) encloses every value over an (n, 2)
 box to an (m, 2) array.)doc")
       .def(py::init<const Fn&, std::size_t>(), py::arg("f"), py::arg("n"))
       .def_property_readonly("n", [](const ColumnTape& t) { return t.columns; })

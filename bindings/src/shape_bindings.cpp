@@ -43,33 +43,42 @@ m[r, c] is an entry; the transforms (translate, scale, rotate_x/y/z) are 4x4 aff
       .def("__repr__", [](const Matrix& a) {
         return "<genmod.Matrix " + std::to_string(a.rows()) + "x" + std::to_string(a.cols()) + ">";
       });
-  m.def("transpose", &transpose, py::arg("m"));
-  m.def("determinant", &determinant, py::arg("m"));
+  m.def("transpose", &transpose, py::arg("m"), "The transposed matrix.");
+  m.def("determinant", &determinant, py::arg("m"), "The determinant of a square matrix (cofactor expansion, no divisions).");
   m.def("inverse", &inverse, py::arg("m"), "Adjugate / determinant (an error value where det = 0).");
-  m.def("translate", py::overload_cast<const Fn&, const Fn&, const Fn&>(&translate), py::arg("tx"), py::arg("ty"), py::arg("tz"));
+  m.def("translate", py::overload_cast<const Fn&, const Fn&, const Fn&>(&translate), py::arg("tx"), py::arg("ty"), py::arg("tz"),
+        "The 4x4 translation by (tx, ty, tz).");
   m.def("translate", py::overload_cast<const Fn&>(&translate), py::arg("t"), "Translation by a 3-vector Fn.");
-  m.def("scale", py::overload_cast<const Fn&, const Fn&, const Fn&>(&scale), py::arg("sx"), py::arg("sy"), py::arg("sz"));
+  m.def("scale", py::overload_cast<const Fn&, const Fn&, const Fn&>(&scale), py::arg("sx"), py::arg("sy"), py::arg("sz"),
+        "The 4x4 scaling by (sx, sy, sz).");
   m.def("scale", py::overload_cast<const Fn&>(&scale), py::arg("s"), "Uniform scaling.");
-  m.def("rotate_x", &rotate_x, py::arg("angle"));
-  m.def("rotate_y", &rotate_y, py::arg("angle"));
-  m.def("rotate_z", &rotate_z, py::arg("angle"));
+  m.def("rotate_x", &rotate_x, py::arg("angle"), "The 4x4 rotation by angle (radians) about the x axis.");
+  m.def("rotate_y", &rotate_y, py::arg("angle"), "The 4x4 rotation by angle (radians) about the y axis.");
+  m.def("rotate_z", &rotate_z, py::arg("angle"), "The 4x4 rotation by angle (radians) about the z axis.");
   m.def("transform3d", &transform3d, py::arg("shape"), py::arg("m"), "A 3-D shape (points) moved by an affine 4x4 matrix.");
 }
 
 void bind_shapes(py::module_& m) {
   m.def("sphere_surface", &sphere_surface, py::arg("radius") = Fn(1.0),
         "The sphere as a parametric surface of (u, v) over [0, 1]^2, normal outward.");
-  m.def("torus_surface", &torus_surface, py::arg("major_radius"), py::arg("minor_radius"));
-  m.def("cylinder_surface", &cylinder_surface, py::arg("radius"), py::arg("height"));
-  m.def("cone_surface", &cone_surface, py::arg("radius"), py::arg("height"));
-  m.def("disk_surface", &disk_surface, py::arg("radius"));
-  m.def("superquadric_surface", &superquadric_surface, py::arg("e1"), py::arg("e2"), py::arg("radii") = Fn(1.0));
+  m.def("torus_surface", &torus_surface, py::arg("major_radius"), py::arg("minor_radius"),
+        "The torus about the z axis as a parametric surface of (u, v), normal outward.");
+  m.def("cylinder_surface", &cylinder_surface, py::arg("radius"), py::arg("height"),
+        "The side of a cylinder about the z axis from z = 0 to height, a parametric surface of (u, v).");
+  m.def("cone_surface", &cone_surface, py::arg("radius"), py::arg("height"),
+        "The side of a cone about the z axis (base radius at z = 0, apex at height), a parametric surface.");
+  m.def("disk_surface", &disk_surface, py::arg("radius"), "A disk in the plane z = 0, a parametric surface of (u, v).");
+  m.def("superquadric_surface", &superquadric_surface, py::arg("e1"), py::arg("e2"), py::arg("radii") = Fn(1.0),
+        "Barr's superquadric with exponents e1 (latitude) and e2 (longitude), a parametric surface.");
   m.def("implicit_sphere", &implicit_sphere, py::arg("radius"), py::arg("center") = Fn(0.0),
         "Signed distance to a sphere of p = (x(0), x(1), x(2)): negative inside.");
   m.def("implicit_box", &implicit_box, py::arg("half_extents"), "Signed distance to a centred box (half extents: a 3-vector Fn).");
-  m.def("implicit_cylinder", &implicit_cylinder, py::arg("radius"), py::arg("half_height"));
-  m.def("implicit_torus", &implicit_torus, py::arg("major_radius"), py::arg("minor_radius"));
-  m.def("implicit_gyroid", &implicit_gyroid, py::arg("frequency") = Fn(1.0), py::arg("thickness") = Fn(0.0));
+  m.def("implicit_cylinder", &implicit_cylinder, py::arg("radius"), py::arg("half_height"),
+        "Signed distance to a capped cylinder about the z axis with |z| <= half_height.");
+  m.def("implicit_torus", &implicit_torus, py::arg("major_radius"), py::arg("minor_radius"),
+        "Signed distance to a torus about the z axis.");
+  m.def("implicit_gyroid", &implicit_gyroid, py::arg("frequency") = Fn(1.0), py::arg("thickness") = Fn(0.0),
+        "The gyroid g < 0 (thickness 0) or the sheet |g| - thickness < 0.");
   m.def("csg_union", &csg_union, py::arg("a"), py::arg("b"), "min(a, b).");
   m.def("csg_intersection", &csg_intersection, py::arg("a"), py::arg("b"), "max(a, b).");
   m.def("csg_difference", &csg_difference, py::arg("a"), py::arg("b"), "a minus b: max(a, -b).");
@@ -84,17 +93,20 @@ void bind_skeletal(py::module_& m) {
   const Fn p = skeleton_query_point();
   m.def("skeleton_query_point", &skeleton_query_point, "(x(0), x(1), x(2)).");
   m.def("distance2_to_point", &distance2_to_point, py::arg("c"), py::arg("p") = p, "|p - c|^2.");
-  m.def("distance2_to_segment", &distance2_to_segment, py::arg("a"), py::arg("b"), py::arg("p") = p);
-  m.def("distance2_to_line", &distance2_to_line, py::arg("a"), py::arg("b"), py::arg("p") = p);
+  m.def("distance2_to_segment", &distance2_to_segment, py::arg("a"), py::arg("b"), py::arg("p") = p,
+        "The squared distance from p to the segment a-b.");
+  m.def("distance2_to_line", &distance2_to_line, py::arg("a"), py::arg("b"), py::arg("p") = p,
+        "The squared distance from p to the line through a and b.");
   m.def("distance2_to_polyline", [](const std::vector<Point3>& v, const Fn& q) { return distance2_to_polyline(v, q); },
-        py::arg("vertices"), py::arg("p") = p);
-  m.def("distance2_to_triangle", &distance2_to_triangle, py::arg("a"), py::arg("b"), py::arg("c"), py::arg("p") = p);
+        py::arg("vertices"), py::arg("p") = p, "The squared distance from p to the polyline through the vertices.");
+  m.def("distance2_to_triangle", &distance2_to_triangle, py::arg("a"), py::arg("b"), py::arg("c"), py::arg("p") = p,
+        "The squared distance from p to the filled triangle abc.");
   m.def("distance_surface", [](const std::vector<Fn>& d2, const std::vector<double>& radii) {
         return distance_surface(std::span<const Fn>(d2), std::span<const double>(radii));
       }, py::arg("distances2"), py::arg("radii"),
       "min_i d2_i / r_i^2 - 1: the union of spheres / capsules of radius r_i around the elements (negative inside).");
   m.def("tapered_segment_surface", &tapered_segment_surface, py::arg("a"), py::arg("b"), py::arg("r1"), py::arg("r2"),
-        py::arg("p") = p);
+        py::arg("p") = p, "A tapered limb: d^2 / r^2 - 1 with the radius going from r1 at a to r2 at b.");
 
   py::enum_<Kernel>(m, "Kernel", "Convolution kernels: gaussian, bspline, wyvill.")
       .value("gaussian", Kernel::gaussian)
@@ -110,7 +122,8 @@ void bind_skeletal(py::module_& m) {
         "iso - D: a density field in genmod's convention (negative inside).");
   m.def("erf", &erf, py::arg("x"), "The error function, with an outward-rounded enclosure.");
 
-  m.def("average_blend", [](const std::vector<Fn>& f) { return average_blend(std::span<const Fn>(f)); }, py::arg("fields"));
+  m.def("average_blend", [](const std::vector<Fn>& f) { return average_blend(std::span<const Fn>(f)); }, py::arg("fields"),
+        "The mean of the fields: a smooth global blend.");
   m.def("range_blend", [](const std::vector<Fn>& f, const std::vector<double>& r, int t) {
         return range_blend(std::span<const Fn>(f), std::span<const double>(r), t);
       }, py::arg("primitives"), py::arg("ranges"), py::arg("thumbweight") = 2,

@@ -4,6 +4,7 @@
 #include "point_ops.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace genmod {
 namespace {
@@ -24,7 +25,7 @@ inline void run_clause_imm(double* out, const double* a, double k, std::size_t n
 __attribute__((target_clones("avx2", "default"))) void run_tape(const Clause* clauses, std::size_t num_clauses,
                                                                  const double* constants, double* regs,
                                                                  const double* const* inputs, std::size_t offset,
-                                                                 std::size_t n, const Tape& tape,
+                                                                 std::size_t stride, std::size_t n, const Tape& tape,
                                                                  std::vector<double>& slots, std::vector<double>& args,
                                                                  std::vector<double>& call_out) {
   constexpr std::size_t W = BatchEvaluator::kChunk;
@@ -60,7 +61,14 @@ __attribute__((target_clones("avx2", "default"))) void run_tape(const Clause* cl
 #undef GENMOD_IMM
       case Op::Select: run_clause<Op::Select>(out, a, b, cc, n); break;
       case Op::Const: std::fill(out, out + n, constants[c.a]); break;
-      case Op::Load: std::copy(inputs[c.a] + offset, inputs[c.a] + offset + n, out); break;
+      case Op::Load:
+        if (stride == 1) {
+          std::copy(inputs[c.a] + offset, inputs[c.a] + offset + n, out);
+        } else {
+          const double* in = inputs[c.a] + offset * stride;
+          for (std::size_t p = 0; p < n; ++p) out[p] = in[p * stride];
+        }
+        break;
       case Op::Call: {
         // Custom operators are called point by point; their outputs go to per-slot rows.
         const CallSite& cs = tape.calls()[c.a];
@@ -83,25 +91,33 @@ __attribute__((target_clones("avx2", "default"))) void run_tape(const Clause* cl
 }  // namespace
 
 void BatchEvaluator::eval(const Tape& tape, std::span<const double* const> inputs, std::size_t count,
-                          std::span<double* const> outputs) {
+                          std::span<double* const> outputs, std::size_t input_stride, std::size_t output_stride) {
   detail::check_inputs(tape, inputs.size(), "BatchEvaluator");
+  if (input_stride == 0 || output_stride == 0)
+    throw std::invalid_argument("genmod: BatchEvaluator: strides must be >= 1");
   if (outputs.size() != tape.num_outputs())
     throw std::invalid_argument("genmod: BatchEvaluator: the tape has " + std::to_string(tape.num_outputs()) +
                                 " outputs, got " + std::to_string(outputs.size()) + " output arrays");
   regs_.resize(std::size_t{tape.num_registers()} * kChunk);
   slots_.resize(std::size_t{tape.num_call_slots()} * kChunk);
   for (std::size_t offset = 0; offset < count; offset += kChunk)
-    run_chunk(tape, inputs, offset, std::min(kChunk, count - offset), outputs);
+    run_chunk(tape, inputs, offset, std::min(kChunk, count - offset), outputs, input_stride, output_stride);
 }
 
 void BatchEvaluator::run_chunk(const Tape& tape, std::span<const double* const> inputs, std::size_t offset,
-                               std::size_t n, std::span<double* const> outputs) {
+                               std::size_t n, std::span<double* const> outputs, std::size_t input_stride,
+                               std::size_t output_stride) {
   const auto clauses = tape.clauses();
-  run_tape(clauses.data(), clauses.size(), tape.constants().data(), regs_.data(), inputs.data(), offset, n, tape,
-           slots_, args_, call_out_);
+  run_tape(clauses.data(), clauses.size(), tape.constants().data(), regs_.data(), inputs.data(), offset, input_stride,
+           n, tape, slots_, args_, call_out_);
   for (std::size_t j = 0; j < outputs.size(); ++j) {
     const double* r = regs_.data() + std::size_t{tape.output_registers()[j]} * kChunk;
-    std::copy(r, r + n, outputs[j] + offset);
+    if (output_stride == 1) {
+      std::copy(r, r + n, outputs[j] + offset);
+    } else {
+      double* o = outputs[j] + offset * output_stride;
+      for (std::size_t p = 0; p < n; ++p) o[p * output_stride] = r[p];
+    }
   }
 }
 

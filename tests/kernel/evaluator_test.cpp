@@ -56,6 +56,36 @@ TEST(Evaluators, BatchEqualsScalarBitwiseOnRandomFunctions) {
   }
 }
 
+// Strided arrays (a row-major (count, 3) array read in place, results written into the rows of
+// a (count, 2) array) give the same bits as separate contiguous arrays.
+TEST(Evaluators, StridedBatchEqualsContiguousBitwise) {
+  RandomFunctions rnd(24);
+  BatchEvaluator batch;
+  for (int trial = 0; trial < 100; ++trial) {
+    const Tape tape(cat({rnd.function(5), rnd.function(3)}), kXyz);
+    const std::size_t count = static_cast<std::size_t>(rnd.integer(1, 700));
+    std::vector<double> rows(3 * count), rows_out(2 * count, -1.0);
+    std::vector<std::vector<double>> cols(3, std::vector<double>(count)), cols_out(2, std::vector<double>(count));
+    for (std::size_t i = 0; i < count; ++i)
+      for (std::size_t k = 0; k < 3; ++k) cols[k][i] = rows[3 * i + k] = rnd.uniform(-4, 4);
+    const double* in_rows[] = {rows.data(), rows.data() + 1, rows.data() + 2};
+    double* out_rows[] = {rows_out.data(), rows_out.data() + 1};
+    batch.eval(tape, in_rows, count, out_rows, 3, 2);
+    const double* in_cols[] = {cols[0].data(), cols[1].data(), cols[2].data()};
+    double* out_cols[] = {cols_out[0].data(), cols_out[1].data()};
+    batch.eval(tape, in_cols, count, out_cols);
+    for (std::size_t i = 0; i < count; ++i)
+      for (std::size_t j = 0; j < 2; ++j)
+        ASSERT_TRUE(same_bits(rows_out[2 * i + j], cols_out[j][i]) ||
+                    (std::isnan(rows_out[2 * i + j]) && std::isnan(cols_out[j][i])))
+            << "point " << i << " output " << j;
+  }
+  const double* in[] = {nullptr, nullptr, nullptr};
+  double* out[] = {nullptr, nullptr};
+  const Tape tape(cat({x(0), x(1)}), kXyz);
+  EXPECT_THROW(batch.eval(tape, in, 0, out, 0, 1), std::invalid_argument);
+}
+
 TEST(Evaluators, BatchEqualsScalarBitwiseOnProspero) {
   const Tape tape(load_vm(GENMOD_DATA_DIR "/prospero.vm"), std::vector<int>{0, 1});
   RandomFunctions rnd(22);

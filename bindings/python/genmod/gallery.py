@@ -13,6 +13,7 @@ from . import _genmod
 
 @dataclass(frozen=True)
 class Parameter:
+    """A model parameter: its name, default value and what it does."""
     name: str
     default: float
     doc: str
@@ -20,6 +21,7 @@ class Parameter:
 
 @dataclass(frozen=True)
 class Model:
+    """A gallery model: its name, kind, description, parameters and whether it is open."""
     name: str
     kind: str  # "parametric" (a surface or solid of x(0), x(1), x(2)) or "implicit" (f < 0 inside)
     description: str

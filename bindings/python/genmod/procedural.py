@@ -15,6 +15,7 @@ from . import _genmod
 
 @dataclass(frozen=True)
 class Parameter:
+    """A procedure parameter: its name, type, default value and what it does."""
     name: str
     type: str  # "Double", "Integer", "Boolean", "String" or "Vector" (the thesis's Java types)
     default: object
@@ -23,6 +24,7 @@ class Parameter:
 
 @dataclass(frozen=True)
 class Model:
+    """A procedural model: its name, description, signature, parameters and whether it is cacheable."""
     name: str
     description: str
     signature: str  # the thesis's signature string, e.g. "OUT:Double,height:Integer,numLegs"
@@ -53,6 +55,7 @@ def set_caching(on):
 
 
 def caching():
+    """Whether the procedure caches are on."""
     return _genmod._procedural_caching()
 
 
@@ -62,4 +65,5 @@ def clear_caches():
 
 
 def reset_cache_stats(name):
+    """Sets a procedure's hit, miss and eviction counters back to zero."""
     _genmod._reset_procedural_cache_stats(name)
