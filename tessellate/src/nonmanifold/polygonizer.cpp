@@ -279,8 +279,8 @@ class Polygonizer {
     Candidate proto;
     proto.lo = std::min(ka, kb);
     proto.hi = std::max(ka, kb);
-    const std::vector<Point> x = samples_;  // refine() reuses nothing, but keep the samples stable
-    const std::vector<int> r = regions_;
+    const std::vector<Point>& x = samples_;
+    const std::vector<int>& r = regions_;
     for (int i = 0; i < n; ++i)
       if (r[static_cast<std::size_t>(i)] != r[static_cast<std::size_t>(i + 1)])
         refine(e, proto, x[static_cast<std::size_t>(i)], r[static_cast<std::size_t>(i)], x[static_cast<std::size_t>(i + 1)],

@@ -101,6 +101,18 @@ std::size_t collapse(RegionMesh& m, double length) {
 // (`moved`), so that the passes end; returns how many moved.
 std::size_t split_thin(RegionMesh& m, double length, std::vector<bool>& moved) {
   auto& tris = m.mesh.triangles;
+  // Most meshes have none: look before building the edge map.
+  bool any = false;
+  for (std::size_t t = 0; t < tris.size() && !any; ++t)
+    for (int i = 0; i < 3 && !any; ++i) {
+      const std::uint32_t v = tris[t][static_cast<std::size_t>(i)];
+      double u;
+      any = !moved[v] &&
+            segment_distance(m.mesh.vertices[v], m.mesh.vertices[tris[t][static_cast<std::size_t>((i + 1) % 3)]],
+                             m.mesh.vertices[tris[t][static_cast<std::size_t>((i + 2) % 3)]], u) < length &&
+            u > 0.0 && u < 1.0;
+    }
+  if (!any) return 0;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::size_t>> on_edge;
   for (std::size_t t = 0; t < tris.size(); ++t)
     for (int k = 0; k < 3; ++k) {
@@ -186,7 +198,7 @@ void remove_small_triangles(RegionMesh& m, double min_length) {
   for (std::size_t pass = 0; pass < 4 * m.mesh.vertices.size() + 16; ++pass) {
     const std::size_t collapsed = collapse(m, min_length);
     m.stats.collapsed_edges += collapsed;
-    m.stats.removed_triangles += clean(m);
+    if (collapsed > 0 || pass == 0) m.stats.removed_triangles += clean(m);
     if (collapsed > 0) continue;
     const std::size_t split = split_thin(m, min_length, moved);
     if (split == 0) break;

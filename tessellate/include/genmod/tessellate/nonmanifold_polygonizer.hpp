@@ -54,7 +54,7 @@
 //
 // Polygons. In a tetrahedron without a face vertex of interest, each line of interest is
 // chained to its partners across the tetrahedron's faces into a polygon of 3 or 4 sides
-// (2 triangles for a quadrilateral). In a tetrahedron with face vertices of interest, one
+// (a quadrilateral is split along the diagonal that bends it least). In a tetrahedron with face vertices of interest, one
 // internal vertex is put at their average (at the face vertex itself when there is one) and
 // every line of interest makes one triangle with it; where four regions meet inside a
 // tetrahedron this is the internal vertex of §5.7.4. Triangles are ordered so that, seen
