@@ -101,9 +101,7 @@ std::size_t misoriented(const RegionMesh& m, std::span<const Fn> regions, double
   const std::vector<int> r = region_at(regions, probes);
   std::size_t bad = 0;
   for (std::size_t i = 0; i < which.size(); ++i)
-    if (r[2 * i] != m.regions[which[i]].first || r[2 * i + 1] != m.regions[which[i]].second) {
-      ++bad;
-    }
+    if (r[2 * i] != m.regions[which[i]].first || r[2 * i + 1] != m.regions[which[i]].second) ++bad;
   return bad;
 }
 
@@ -377,6 +375,67 @@ TEST(NonmanifoldPolygonizer, ThreeRegionsAreNonManifoldExactlyAlongTheCircle) {
     else
       EXPECT_LE(circle_distance(p, r), m.vertex_kinds[i] == RegionVertexKind::internal ? chord : 3 * eps);
   }
+}
+
+// Four regions meeting at a point (the arg max of four linear functions with tetrahedral
+// directions u_l, about a centre off the lattice): six sheets, three meeting along each of
+// the four rays c - t u_l, and an internal vertex near c where all four meet.
+TEST(NonmanifoldPolygonizer, FourRegionsMeetAtAnInternalVertex) {
+  const Point c{0.013, -0.021, 0.017};
+  const double k = 1.0 / std::sqrt(3.0);
+  const std::array<Point, 4> u{{{k, k, k}, {k, -k, -k}, {-k, k, -k}, {-k, -k, k}}};
+  std::vector<Fn> regions;
+  for (const Point& d : u) regions.push_back(d[0] * (X - c[0]) + d[1] * (Y - c[1]) + d[2] * (Z - c[2]));
+  const double size = 0.1;
+  const RegionMesh m = polygonize_regions(regions, {.cube_size = size, .bounds = cube_box(0.43)});
+  const double eps = m.stats.eps;
+  EXPECT_EQ(m.stats.face_vertex_fallbacks, 0u);
+  EXPECT_EQ(m.stats.open_polygons, 0u);
+  std::set<std::pair<int, int>> pairs(m.regions.begin(), m.regions.end());
+  EXPECT_EQ(pairs.size(), 6u);
+  // Distance from p to the ray c - t u_l, t >= 0.
+  const auto ray_distance = [&](const Point& p, int l) {
+    const Point d{p[0] - c[0], p[1] - c[1], p[2] - c[2]};
+    const double t = std::max(0.0, -(d[0] * u[l][0] + d[1] * u[l][1] + d[2] * u[l][2]));
+    return std::hypot(d[0] + t * u[l][0], d[1] + t * u[l][1], d[2] + t * u[l][2]);
+  };
+  std::array<std::size_t, 4> on_ray{};
+  for (const auto& [e, d] : edge_degrees(m.mesh)) {
+    EXPECT_LE(d, 3);
+    if (d != 3) continue;
+    for (std::uint32_t v : {e.first, e.second}) {
+      const Point& p = m.mesh.vertices[v];
+      double nearest = INFINITY;
+      int which = 0;
+      for (int l = 0; l < 4; ++l)
+        if (ray_distance(p, l) < nearest) {
+          nearest = ray_distance(p, l);
+          which = l;
+        }
+      const bool at_centre = norm({p[0] - c[0], p[1] - c[1], p[2] - c[2]}) < size;
+      EXPECT_LE(nearest, at_centre ? size : 3 * eps) << p[0] << " " << p[1] << " " << p[2];
+      ++on_ray[static_cast<std::size_t>(which)];
+    }
+  }
+  for (std::size_t n : on_ray) EXPECT_GT(n, 4u);
+  bool centre = false;
+  for (std::size_t v = 0; v < m.mesh.vertices.size(); ++v) {
+    const Point& p = m.mesh.vertices[v];
+    centre = centre || (m.vertex_kinds[v] == RegionVertexKind::internal &&
+                        norm({p[0] - c[0], p[1] - c[1], p[2] - c[2]}) < size);
+  }
+  EXPECT_TRUE(centre);
+  // Orientation holds on these planar sheets away from the rays and from the tetrahedra
+  // around the centre, where the internal vertex (an average of face vertices on different
+  // rays) is off the point where the four regions meet.
+  EXPECT_EQ(misoriented(m, regions, 2 * eps,
+                        [&](const Point& p) {
+                          if (norm({p[0] - c[0], p[1] - c[1], p[2] - c[2]}) < size) return true;
+                          for (int l = 0; l < 4; ++l)
+                            if (ray_distance(p, l) < 4 * eps) return true;
+                          return false;
+                        }),
+            0u);
 }
 
 TEST(NonmanifoldPolygonizer, SameInputGivesBitwiseTheSameMesh) {
