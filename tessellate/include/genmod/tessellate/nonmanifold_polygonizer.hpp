@@ -27,7 +27,9 @@
 // f_reg is evaluated at every lattice corner (dense, once). Every cube whose corners are not
 // all in one region is polygonized, and from there the walk also visits neighbours across
 // cube faces that hold a face line of interest (a boundary can cross a cube between corners
-// of one region), never leaving the lattice. Each cube is cut into five tetrahedra, the
+// of one region), never leaving the lattice. A region thinner than a cube between corners of
+// one other region (a thin slab, a small bubble) crosses each edge twice in a row: looped
+// intersections, ignored as in the source, so it is lost; use a smaller cube_size. Each cube is cut into five tetrahedra, the
 // decomposition alternating with the parity of i + j + k so the face diagonals of neighbours
 // coincide (§5.7.2 item 2).
 //
