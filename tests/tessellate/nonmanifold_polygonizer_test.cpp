@@ -438,6 +438,40 @@ TEST(NonmanifoldPolygonizer, FourRegionsMeetAtAnInternalVertex) {
             0u);
 }
 
+// Post-process 2 with normals (§5.7.6): each copy of a vertex gets its own sheet's normal,
+// the gradient of g_b - g_a: radial on the hemispheres, -z on the disc between the upper
+// (0) and lower (1) half, three copies (three normals) at every junction vertex. (On the
+// junction itself the differences straddle the kinks of min() and mix the sheets.)
+TEST(NonmanifoldPolygonizer, NormalsPerRegionPair) {
+  const double r = 0.7;
+  const std::vector<Fn> regions = half_balls(r);
+  const RegionMesh m = polygonize_regions(regions, {.cube_size = 0.1, .bounds = cube_box(0.93)});
+  std::vector<std::pair<int, int>> pairs;
+  std::vector<std::uint32_t> origin;
+  const Mesh split = split_by_region_pair(m, &pairs, &origin);
+  const auto normals = region_pair_normals(regions, split, pairs, 0.001);
+  ASSERT_EQ(normals.size(), split.vertices.size());
+  std::map<std::uint32_t, std::vector<Point>> at;
+  for (std::size_t v = 0; v < split.vertices.size(); ++v) {
+    const Point& p = split.vertices[v];
+    const Point& n = normals[v];
+    EXPECT_NEAR(norm(n), 1.0, 1e-12);
+    at[origin[v]].push_back(n);
+    if (circle_distance(p, r) < 0.01) continue;  // the kink of min() at the junction
+    if (pairs[v] == std::make_pair(0, 1)) {
+      EXPECT_NEAR(n[2], -1.0, 1e-9);
+    } else {
+      const double radial = (n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) / norm(p);
+      EXPECT_GT(radial, std::cos(1.0 * std::acos(-1.0) / 180.0));  // within 1 degree, outward
+    }
+  }
+  std::size_t junction = 0;
+  for (const auto& [v, ns] : at) junction += ns.size() == 3;
+  EXPECT_GT(junction, 40u);
+  EXPECT_THROW(region_pair_normals(regions, split, std::span(pairs).first(3), 0.001), std::invalid_argument);
+  EXPECT_THROW(region_pair_normals(regions, split, pairs, 0.0), std::invalid_argument);
+}
+
 TEST(NonmanifoldPolygonizer, SameInputGivesBitwiseTheSameMesh) {
   const std::vector<Fn> regions = sphere_square(0.6, 1.0);
   const NonmanifoldSettings s{.cube_size = 0.15, .bounds = cube_box(1.23), .interest = {{0, 2}, {0, 3}, {2, 3}}};

@@ -70,7 +70,8 @@
 // midpoint as in the source: that keeps every vertex within close_factor * eps of where it
 // was, instead of up to half an edge); degenerate triangles are removed and vertices no longer
 // used are dropped. `split_by_region_pair` makes the spec's duplicated vertices (one copy of a
-// junction vertex per region pair of the triangles around it).
+// junction vertex per region pair of the triangles around it), and `region_pair_normals` gives
+// each copy the normal of its own sheet.
 //
 // Limits: `max_cubes` (cubes polygonized) and the lattice (a walk that would leave the bounds)
 // are reported in stats.limits_hit ("cubes", "bounds"); the mesh is then cut there. The
@@ -168,5 +169,15 @@ void remove_small_triangles(RegionMesh& mesh, double min_length);
 // index of the vertex it copies.
 Mesh split_by_region_pair(const RegionMesh& mesh, std::vector<std::pair<int, int>>* vertex_pairs = nullptr,
                           std::vector<std::uint32_t>* origin = nullptr);
+
+// Normals of the split mesh (§5.7.6: f_reg has no gradient, so the client's continuous
+// functions give it): at each vertex with pair (a, b), the unit gradient of g_b - g_a by
+// central differences of half-width `step` (e.g. cube_size / 100), pointing into region b,
+// the greater; (0, 0, 0) where that gradient vanishes or is not a number. Throws
+// std::invalid_argument for a pair list that does not match the vertices, a pair naming a
+// region that does not exist, a region function that is not scalar, or a bad step.
+std::vector<std::array<double, 3>> region_pair_normals(std::span<const Fn> regions, const Mesh& split,
+                                                       std::span<const std::pair<int, int>> vertex_pairs,
+                                                       double step);
 
 }  // namespace genmod
