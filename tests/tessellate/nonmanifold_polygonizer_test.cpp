@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -405,7 +406,7 @@ TEST(NonmanifoldPolygonizer, FourRegionsMeetAtAnInternalVertex) {
     if (d != 3) continue;
     for (std::uint32_t v : {e.first, e.second}) {
       const Point& p = m.mesh.vertices[v];
-      double nearest = INFINITY;
+      double nearest = std::numeric_limits<double>::infinity();
       int which = 0;
       for (int l = 0; l < 4; ++l)
         if (ray_distance(p, l) < nearest) {
@@ -508,13 +509,13 @@ TEST(NonmanifoldPolygonizer, BadInputIsRejectedWithMessagesNamingTheProblem) {
   expect_error([&] { polygonize_regions(std::vector<Fn>{}, ok); }, "at least two region functions");
   expect_error([&] { polygonize_regions(std::vector<Fn>{R, cat({X, Y})}, ok); }, "region function 1 must be scalar");
   expect_error([&] { polygonize_regions(std::vector<Fn>{R, x(3)}, ok); }, "depends on x(3)");
-  for (double size : {0.0, -1.0, double(NAN), double(INFINITY)}) {
+  for (double size : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
     NonmanifoldSettings s = ok;
     s.cube_size = size;
     expect_error([&] { polygonize_regions(two, s); }, "cube_size must be finite and positive");
   }
   NonmanifoldSettings s = ok;
-  s.bounds[1] = Interval(0.0, INFINITY);
+  s.bounds[1] = Interval(0.0, std::numeric_limits<double>::infinity());
   expect_error([&] { polygonize_regions(two, s); }, "y range is not bounded");
   s = ok;
   s.bounds[2] = Interval::empty();

@@ -306,7 +306,8 @@ class Polygonizer {
     for (int side = 0; side < 3; ++side) {
       const Coord& from = c[static_cast<std::size_t>(side)];
       const Coord& to = c[static_cast<std::size_t>((side + 1) % 3)];
-      const std::vector<int> v = edge(from, to).vertices;  // a copy: edge() may grow edges_
+      // Used before the next edge() call, which may grow edges_.
+      const std::vector<int>& v = edge(from, to).vertices;
       if (key(from) < key(to)) {
         for (int id : v) walk.push_back({id, candidates_[id].a, candidates_[id].b, side});
       } else {

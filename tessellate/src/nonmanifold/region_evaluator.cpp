@@ -1,6 +1,7 @@
 #include "nonmanifold/region_evaluator.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace genmod::nonmanifold {
 
@@ -15,7 +16,7 @@ Tape compile(std::span<const Fn> regions) {
 
 int arg_max(const double* values, std::size_t stride, int k) {
   int best = 0;
-  double best_value = -INFINITY;
+  double best_value = -std::numeric_limits<double>::infinity();
   bool any = false;
   for (int i = 0; i < k; ++i) {
     const double v = values[static_cast<std::size_t>(i) * stride];
@@ -45,9 +46,9 @@ std::span<const int> RegionEvaluator::regions(std::span<const Point> points) {
     z_[p] = points[p][2];
   }
   const double* inputs[3] = {x_.data(), y_.data(), z_.data()};
-  std::vector<double*> outputs(static_cast<std::size_t>(k_));
-  for (int i = 0; i < k_; ++i) outputs[static_cast<std::size_t>(i)] = values_.data() + static_cast<std::size_t>(i) * n;
-  if (n > 0) batch_.eval(tape_, inputs, n, outputs);
+  outputs_.resize(static_cast<std::size_t>(k_));
+  for (int i = 0; i < k_; ++i) outputs_[static_cast<std::size_t>(i)] = values_.data() + static_cast<std::size_t>(i) * n;
+  if (n > 0) batch_.eval(tape_, inputs, n, outputs_);
   for (std::size_t p = 0; p < n; ++p) out_[p] = arg_max(values_.data() + p, n, k_);
   count += n;
   return {out_.data(), n};

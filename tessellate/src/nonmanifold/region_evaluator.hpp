@@ -34,6 +34,7 @@ class RegionEvaluator {
   Tape tape_;
   BatchEvaluator batch_;
   std::vector<double> x_, y_, z_, values_;
+  std::vector<double*> outputs_;
   std::vector<int> out_;
 };
 
