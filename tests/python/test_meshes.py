@@ -95,6 +95,14 @@ def test_polygonize_regions_meshes_a_ball_cut_by_a_plane():
     report = sphere.validate()
     assert report["valid"], report["description"]
     assert (pairs2 == [0, 1]).all()
+    # Split per sheet: the junction vertices three times, each copy with its sheet's normal.
+    split, pairs3, extra = gm.polygonize_regions([gm.min(d, z), gm.min(d, -z), -d], 0.1, box, split=True)
+    assert (pairs3 == pairs).all() and len(split.triangles) == len(mesh.triangles)
+    assert extra["normals"].shape == split.vertices.shape == (len(extra["origin"]), 3)
+    counts = np.bincount(extra["origin"])
+    assert set(counts) == {1, 3}
+    disc = (extra["vertex_pairs"] == [0, 1]).all(axis=1) & (np.hypot(split.vertices[:, 0], split.vertices[:, 1]) < 0.6)
+    assert disc.sum() > 10 and np.allclose(extra["normals"][disc], [0, 0, -1])
     with pytest.raises(ValueError, match="at least two region functions"):
         gm.polygonize_regions([d], 0.1, box)
     with pytest.raises(ValueError, match="cube_size"):
