@@ -1,6 +1,6 @@
 // Meshes in Python: vertex (V, 3) and triangle (F, 3) numpy arrays, files, the validator's
-// report, previews (Mesh._repr_png_ shows a mesh in a notebook), the implicit mesher and the
-// continuation polygonizer.
+// report, previews (Mesh._repr_png_ shows a mesh in a notebook), the implicit mesher, the
+// continuation polygonizer and the non-manifold polygonizer for several regions.
 #include "bindings.hpp"
 #include "interruptible.hpp"
 
@@ -8,6 +8,7 @@
 #include "genmod/tessellate/continuation_polygonizer.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/mesh_io.hpp"
+#include "genmod/tessellate/nonmanifold_polygonizer.hpp"
 #include "genmod/tessellate/png_io.hpp"
 #include "genmod/tessellate/preview.hpp"
 #include "genmod/tessellate/validate.hpp"
@@ -189,6 +190,88 @@ tetrahedra per cube.
 
 Returns (mesh, stats); stats has the cubes visited, evaluations of f, the vertex error bound,
 the seeds, the limits hit and the per-vertex normals (V, 3).)doc");
+
+  m.def("polygonize_regions", [](const std::vector<Fn>& regions, double cube_size, const py::object& box,
+                                 const py::object& interest, int sections, int steps, double close_factor,
+                                 std::size_t max_cubes, bool split) {
+        NonmanifoldSettings s;
+        s.cube_size = cube_size;
+        s.bounds = box_from(box.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>());
+        if (!interest.is_none())
+          for (const auto& item : interest.cast<std::vector<std::pair<int, int>>>()) s.interest.push_back(item);
+        s.sections = sections;
+        s.steps = steps;
+        s.close_factor = close_factor;
+        s.max_cubes = max_cubes;
+        RegionMesh result;
+        Mesh split_mesh;
+        std::vector<std::pair<int, int>> vertex_pairs;
+        std::vector<std::uint32_t> origin;
+        std::vector<std::array<double, 3>> normals;
+        {
+          py::gil_scoped_release unlocked;
+          result = polygonize_regions(regions, s);
+          if (split) {
+            split_mesh = split_by_region_pair(result, &vertex_pairs, &origin);
+            normals = region_pair_normals(regions, split_mesh, vertex_pairs, 0.01 * cube_size);
+          }
+        }
+        py::array_t<std::int32_t> pairs({static_cast<py::ssize_t>(result.regions.size()), py::ssize_t{2}});
+        std::int32_t* p = pairs.mutable_data();
+        for (const auto& [a, b] : result.regions) {
+          *p++ = a;
+          *p++ = b;
+        }
+        py::array_t<std::uint8_t> kinds(static_cast<py::ssize_t>(result.vertex_kinds.size()));
+        std::uint8_t* k = kinds.mutable_data();
+        for (RegionVertexKind kind : result.vertex_kinds) *k++ = static_cast<std::uint8_t>(kind);
+        const auto& st = result.stats;
+        py::dict stats;
+        stats["cubes"] = st.cubes;
+        stats["evaluations"] = st.evaluations();
+        stats["corner_evaluations"] = st.corner_evaluations;
+        stats["sample_evaluations"] = st.sample_evaluations;
+        stats["refine_evaluations"] = st.refine_evaluations;
+        stats["face_evaluations"] = st.face_evaluations;
+        stats["face_vertices"] = st.face_vertices;
+        stats["face_vertex_fallbacks"] = st.face_vertex_fallbacks;
+        stats["internal_vertices"] = st.internal_vertices;
+        stats["eps"] = st.eps;
+        stats["limits_hit"] = st.limits_hit;
+        stats["vertex_kinds"] = kinds;
+        if (!split) return py::make_tuple(result.mesh, pairs, stats);
+        py::array_t<double> n({static_cast<py::ssize_t>(normals.size()), py::ssize_t{3}});
+        double* q = n.mutable_data();
+        for (const auto& v : normals) q = std::copy(v.begin(), v.end(), q);
+        py::array_t<std::int32_t> vp({static_cast<py::ssize_t>(vertex_pairs.size()), py::ssize_t{2}});
+        std::int32_t* r = vp.mutable_data();
+        for (const auto& [a, b] : vertex_pairs) {
+          *r++ = a;
+          *r++ = b;
+        }
+        py::array_t<std::uint32_t> o(static_cast<py::ssize_t>(origin.size()));
+        std::copy(origin.begin(), origin.end(), o.mutable_data());
+        stats["normals"] = n;
+        stats["vertex_pairs"] = vp;
+        stats["origin"] = o;
+        return py::make_tuple(split_mesh, pairs, stats);
+      }, py::arg("regions"), py::arg("cube_size"), py::arg("box"), py::arg("interest") = py::none(),
+      py::arg("sections") = 16, py::arg("steps") = 4, py::arg("close_factor") = 1.0,
+      py::arg("max_cubes") = std::size_t{10'000'000}, py::arg("split") = false,
+      R"doc(Bloomenthal's non-manifold polygonizer: the boundaries between regions of space. The region of
+a point is the index of the largest of the functions `regions` (K >= 2 scalar functions of x, y,
+z); interest is a list of region pairs to mesh (default: all). Cubes of edge cube_size fill box
+(shape (3, 2)); each tetrahedron edge is sampled at `sections` points and each crossing refined
+by `steps` halvings.
+
+Returns (mesh, pairs, stats): pairs (F, 2) int32 gives each triangle's regions (first < second;
+the normal points into the second); stats has the evaluations of the region function by
+purpose, eps (the edge-vertex tolerance), the face and internal vertices, the limits hit and
+vertex_kinds (V,) uint8: 0 edge, 1 face, 2 internal vertex. split=True returns instead the mesh
+with each vertex duplicated once per region pair of the triangles around it (one copy per sheet
+along a junction), and adds stats normals (V, 3) (each sheet's own normal, the gradient of
+g_b - g_a, into the greater region), vertex_pairs (V, 2) and origin (V,) (the vertex of the
+welded mesh each copies; vertex_kinds stays per welded vertex).)doc");
 }
 
 }  // namespace genmod::python

@@ -72,3 +72,40 @@ def test_continuation_polygonizer_meshes_the_piece_of_the_start():
         gm.polygonize_continuation(two, 0.0, starts=np.array([[-1.0, 0, 0]]))
     with pytest.raises(RuntimeError, match="not near the surface"):
         gm.polygonize_continuation(two, 0.1, starts=np.array([[10.0, 0, 0]]))
+
+
+def test_polygonize_regions_meshes_a_ball_cut_by_a_plane():
+    x, y, z = gm.x(0), gm.x(1), gm.x(2)
+    d = 0.7 - gm.sqrt(x ** 2 + y ** 2 + z ** 2)
+    box = np.array([[-0.93, 0.93]] * 3)
+    mesh, pairs, stats = gm.polygonize_regions([gm.min(d, z), gm.min(d, -z), -d], 0.1, box)
+    assert pairs.shape == (len(mesh.triangles), 2) and pairs.dtype == np.int32
+    assert {tuple(p) for p in pairs} == {(0, 1), (0, 2), (1, 2)}
+    assert stats["limits_hit"] == [] and stats["face_vertex_fallbacks"] == 0
+    # Edges of degree 3 exactly where the three sheets meet: on the circle r = 0.7, z = 0.
+    edges = np.sort(mesh.triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
+    unique, degree = np.unique(edges, axis=0, return_counts=True)
+    assert set(degree) == {2, 3}
+    junction = mesh.vertices[np.unique(unique[degree == 3])]
+    rho = np.hypot(junction[:, 0], junction[:, 1])
+    assert np.abs(junction[:, 2]).max() < 0.01 and np.abs(rho - 0.7).max() < 0.01
+    assert (stats["vertex_kinds"][np.unique(unique[degree == 3])] > 0).all()  # face or internal
+    # Two regions: the closed sphere, valid, with normals from region 0 (inside) to 1.
+    sphere, pairs2, _ = gm.polygonize_regions([d, -d], 0.1, box, interest=[(0, 1)])
+    report = sphere.validate()
+    assert report["valid"], report["description"]
+    assert (pairs2 == [0, 1]).all()
+    # Split per sheet: the junction vertices three times, each copy with its sheet's normal.
+    split, pairs3, extra = gm.polygonize_regions([gm.min(d, z), gm.min(d, -z), -d], 0.1, box, split=True)
+    assert (pairs3 == pairs).all() and len(split.triangles) == len(mesh.triangles)
+    assert extra["normals"].shape == split.vertices.shape == (len(extra["origin"]), 3)
+    counts = np.bincount(extra["origin"])
+    assert set(counts) == {1, 3}
+    disc = (extra["vertex_pairs"] == [0, 1]).all(axis=1) & (np.hypot(split.vertices[:, 0], split.vertices[:, 1]) < 0.6)
+    assert disc.sum() > 10 and np.allclose(extra["normals"][disc], [0, 0, -1])
+    with pytest.raises(ValueError, match="at least two region functions"):
+        gm.polygonize_regions([d], 0.1, box)
+    with pytest.raises(ValueError, match="cube_size"):
+        gm.polygonize_regions([d, -d], -1.0, box)
+    with pytest.raises(ValueError, match="must be scalar"):
+        gm.polygonize_regions([d, gm.cat([x, y])], 0.1, box)

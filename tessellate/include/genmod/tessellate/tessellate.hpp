@@ -9,6 +9,7 @@
 #include "genmod/tessellate/lattice.hpp"
 #include "genmod/tessellate/mesh.hpp"
 #include "genmod/tessellate/mesh_io.hpp"
+#include "genmod/tessellate/nonmanifold_polygonizer.hpp"
 #include "genmod/tessellate/png_io.hpp"
 #include "genmod/tessellate/preview.hpp"
 #include "genmod/tessellate/raster2d.hpp"

@@ -1,0 +1,233 @@
+// The non-manifold polygonizer's post-processes (§5.7.5): small and thin triangles removed,
+// and junction vertices duplicated per region pair.
+#include "genmod/tessellate/nonmanifold_polygonizer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace genmod {
+
+namespace {
+
+using Point = std::array<double, 3>;
+using Tri = std::array<std::uint32_t, 3>;
+
+double distance(const Point& a, const Point& b) { return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]); }
+
+// Distance from p to the segment a-b and the parameter of the nearest point.
+double segment_distance(const Point& p, const Point& a, const Point& b, double& t) {
+  Point d{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  t = dd > 0.0 ? ((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1] + (p[2] - a[2]) * d[2]) / dd : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return distance(p, {a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]});
+}
+
+bool degenerate(const Tri& t) { return t[0] == t[1] || t[1] == t[2] || t[0] == t[2]; }
+
+// Removes degenerate triangles and pairs of triangles on the same three vertices with
+// opposite orientations (what a collapse can leave where a thin fold closed up).
+std::size_t clean(RegionMesh& m) {
+  std::size_t removed = 0;
+  std::vector<Tri> tris;
+  std::vector<std::pair<int, int>> regions;
+  std::map<std::array<std::uint32_t, 3>, std::vector<std::size_t>> by_set;
+  for (std::size_t t = 0; t < m.mesh.triangles.size(); ++t) {
+    if (degenerate(m.mesh.triangles[t])) {
+      ++removed;
+      continue;
+    }
+    std::array<std::uint32_t, 3> s = m.mesh.triangles[t];
+    std::sort(s.begin(), s.end());
+    by_set[s].push_back(t);
+  }
+  std::vector<bool> drop(m.mesh.triangles.size(), false);
+  for (const auto& [set, list] : by_set) {
+    if (list.size() < 2) continue;
+    // Orientation parity of each copy relative to the sorted order.
+    std::vector<std::size_t> even, odd;
+    for (std::size_t t : list) {
+      const Tri& x = m.mesh.triangles[t];
+      const bool same = (x[0] == set[0] && x[1] == set[1]) || (x[1] == set[0] && x[2] == set[1]) ||
+                        (x[2] == set[0] && x[0] == set[1]);
+      (same ? even : odd).push_back(t);
+    }
+    for (std::size_t i = 0; i < std::min(even.size(), odd.size()); ++i) {
+      if (m.regions[even[i]] != m.regions[odd[i]]) continue;
+      drop[even[i]] = drop[odd[i]] = true;
+      removed += 2;
+    }
+  }
+  for (std::size_t t = 0; t < m.mesh.triangles.size(); ++t) {
+    if (drop[t] || degenerate(m.mesh.triangles[t])) continue;
+    tris.push_back(m.mesh.triangles[t]);
+    regions.push_back(m.regions[t]);
+  }
+  m.mesh.triangles = std::move(tris);
+  m.regions = std::move(regions);
+  return removed;
+}
+
+// Collapses triangle edges shorter than `length` to their midpoints; returns how many.
+std::size_t collapse(RegionMesh& m, double length) {
+  std::vector<std::uint32_t> alias(m.mesh.vertices.size());
+  for (std::uint32_t v = 0; v < alias.size(); ++v) alias[v] = v;
+  const auto find = [&](std::uint32_t v) {
+    while (alias[v] != v) v = alias[v] = alias[alias[v]];
+    return v;
+  };
+  std::size_t n = 0;
+  for (const Tri& t : m.mesh.triangles)
+    for (int e = 0; e < 3; ++e) {
+      std::uint32_t a = find(t[static_cast<std::size_t>(e)]), b = find(t[static_cast<std::size_t>((e + 1) % 3)]);
+      if (a == b || !(distance(m.mesh.vertices[a], m.mesh.vertices[b]) < length)) continue;
+      if (b < a) std::swap(a, b);
+      for (int d = 0; d < 3; ++d) m.mesh.vertices[a][d] = 0.5 * (m.mesh.vertices[a][d] + m.mesh.vertices[b][d]);
+      // A junction or border vertex keeps its kind: internal, then face, then edge.
+      if (static_cast<int>(m.vertex_kinds[b]) > static_cast<int>(m.vertex_kinds[a])) m.vertex_kinds[a] = m.vertex_kinds[b];
+      alias[b] = a;
+      ++n;
+    }
+  for (Tri& t : m.mesh.triangles)
+    for (auto& v : t) v = find(v);
+  return n;
+}
+
+// Moves each vertex closer than `length` to the opposite edge of a triangle onto that edge
+// (at its nearest point) and splits the other triangles on the edge there, so the mesh stays
+// closed. Triangles changed in this pass are left for the next, and a vertex moves once
+// (`moved`), so that the passes end; returns how many moved.
+std::size_t split_thin(RegionMesh& m, double length, std::vector<bool>& moved) {
+  auto& tris = m.mesh.triangles;
+  // Most meshes have none: look before building the edge map.
+  bool any = false;
+  for (std::size_t t = 0; t < tris.size() && !any; ++t)
+    for (int i = 0; i < 3 && !any; ++i) {
+      const std::uint32_t v = tris[t][static_cast<std::size_t>(i)];
+      double u;
+      any = !moved[v] &&
+            segment_distance(m.mesh.vertices[v], m.mesh.vertices[tris[t][static_cast<std::size_t>((i + 1) % 3)]],
+                             m.mesh.vertices[tris[t][static_cast<std::size_t>((i + 2) % 3)]], u) < length &&
+            u > 0.0 && u < 1.0;
+    }
+  if (!any) return 0;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::vector<std::size_t>> on_edge;
+  for (std::size_t t = 0; t < tris.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t a = tris[t][static_cast<std::size_t>(k)], b = tris[t][static_cast<std::size_t>((k + 1) % 3)];
+      if (b < a) std::swap(a, b);
+      on_edge[{a, b}].push_back(t);
+    }
+  std::vector<bool> touched(tris.size(), false);
+  std::size_t count = 0;
+  const std::size_t original = tris.size();
+  for (std::size_t t = 0; t < original; ++t) {
+    if (touched[t]) continue;
+    for (int i = 0; i < 3; ++i) {
+      const std::uint32_t v = tris[t][static_cast<std::size_t>(i)], a = tris[t][static_cast<std::size_t>((i + 1) % 3)],
+                          b = tris[t][static_cast<std::size_t>((i + 2) % 3)];
+      if (moved[v]) continue;
+      double u;
+      if (!(segment_distance(m.mesh.vertices[v], m.mesh.vertices[a], m.mesh.vertices[b], u) < length)) continue;
+      if (u <= 0.0 || u >= 1.0) continue;  // nearer an end: the collapse handles it
+      const std::vector<std::size_t>& across = on_edge[{std::min(a, b), std::max(a, b)}];
+      // Not when another triangle on the edge already has v (two sheets folded onto each
+      // other there): it would keep the edge that the split removes from the others.
+      bool free = true;
+      for (std::size_t s : across) {
+        free = free && !touched[s];
+        if (s != t) free = free && tris[s][0] != v && tris[s][1] != v && tris[s][2] != v;
+      }
+      if (!free) continue;
+      const Point pa = m.mesh.vertices[a], pb = m.mesh.vertices[b];
+      for (int d = 0; d < 3; ++d) m.mesh.vertices[v][d] = pa[d] + u * (pb[d] - pa[d]);
+      moved[v] = true;
+      for (std::size_t s : across) {
+        touched[s] = true;
+        if (s == t) continue;
+        Tri& x = tris[s];
+        for (int k = 0; k < 3; ++k) {
+          const std::uint32_t p = x[static_cast<std::size_t>(k)], q = x[static_cast<std::size_t>((k + 1) % 3)],
+                              r = x[static_cast<std::size_t>((k + 2) % 3)];
+          if (!((p == a && q == b) || (p == b && q == a)) || r == v) continue;
+          const std::pair<int, int> region = m.regions[s];
+          x = {p, v, r};
+          tris.push_back({v, q, r});
+          m.regions.push_back(region);
+          ++m.stats.split_edges;
+          break;
+        }
+      }
+      tris[t] = {v, v, v};  // now flat: removed by clean()
+      ++count;
+      break;
+    }
+  }
+  return count;
+}
+
+void drop_unused_vertices(RegionMesh& m) {
+  std::vector<std::int64_t> map(m.mesh.vertices.size(), -1);
+  std::vector<Point> vertices;
+  std::vector<RegionVertexKind> kinds;
+  for (Tri& t : m.mesh.triangles)
+    for (auto& v : t) {
+      if (map[v] < 0) {
+        map[v] = static_cast<std::int64_t>(vertices.size());
+        vertices.push_back(m.mesh.vertices[v]);
+        kinds.push_back(m.vertex_kinds[v]);
+      }
+      v = static_cast<std::uint32_t>(map[v]);
+    }
+  m.mesh.vertices = std::move(vertices);
+  m.vertex_kinds = std::move(kinds);
+}
+
+}  // namespace
+
+void remove_small_triangles(RegionMesh& m, double min_length) {
+  if (!std::isfinite(min_length) || min_length < 0.0)
+    throw std::invalid_argument("genmod: remove_small_triangles: min_length must be finite and >= 0");
+  if (m.regions.size() != m.mesh.triangles.size() || m.vertex_kinds.size() != m.mesh.vertices.size())
+    throw std::invalid_argument("genmod: remove_small_triangles: the region and vertex-kind arrays do not match the mesh");
+  // Each pass collapses (fewer vertices) or moves a vertex that never moved before, so the
+  // loop ends; the bound is a guard.
+  std::vector<bool> moved(m.mesh.vertices.size(), false);
+  for (std::size_t pass = 0; pass < 4 * m.mesh.vertices.size() + 16; ++pass) {
+    const std::size_t collapsed = collapse(m, min_length);
+    m.stats.collapsed_edges += collapsed;
+    if (collapsed > 0 || pass == 0) m.stats.removed_triangles += clean(m);
+    if (collapsed > 0) continue;
+    const std::size_t split = split_thin(m, min_length, moved);
+    if (split == 0) break;
+    m.stats.removed_triangles += clean(m);
+  }
+  drop_unused_vertices(m);
+}
+
+Mesh split_by_region_pair(const RegionMesh& m, std::vector<std::pair<int, int>>* vertex_pairs,
+                          std::vector<std::uint32_t>* origin) {
+  Mesh out;
+  std::map<std::pair<std::uint32_t, std::pair<int, int>>, std::uint32_t> copies;
+  if (vertex_pairs) vertex_pairs->clear();
+  if (origin) origin->clear();
+  for (std::size_t t = 0; t < m.mesh.triangles.size(); ++t) {
+    Tri tri;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = m.mesh.triangles[t][static_cast<std::size_t>(k)];
+      const auto [it, added] = copies.try_emplace({v, m.regions[t]}, static_cast<std::uint32_t>(out.vertices.size()));
+      if (added) {
+        out.vertices.push_back(m.mesh.vertices[v]);
+        if (vertex_pairs) vertex_pairs->push_back(m.regions[t]);
+        if (origin) origin->push_back(v);
+      }
+      tri[static_cast<std::size_t>(k)] = it->second;
+    }
+    out.triangles.push_back(tri);
+  }
+  return out;
+}
+
+}  // namespace genmod
