@@ -12,6 +12,7 @@ void bind_gallery(pybind11::module_& m);     // the model gallery (gallery_bindi
 void bind_batch(pybind11::module_& m);       // the batch engine (batch_bindings.cpp)
 void bind_procedural(pybind11::module_& m);  // the procedural models and caches (procedural_bindings.cpp)
 void bind_curves_and_sweeps(pybind11::module_& m);  // vectors, curves, sweeps, offsets, paths (curve_bindings.cpp)
+void bind_higher_order_operators(pybind11::module_& m);  // integrate, tables, solver operators, more skeletal (operator_bindings.cpp)
 void bind_operators(pybind11::module_& m);   // matrices, transforms, shapes, skeletal fields (shape_bindings.cpp)
 void bind_solvers(pybind11::module_& m);     // solve, minimize and the queries (solver_bindings.cpp)
 

@@ -165,11 +165,9 @@ Returns (mesh, stats); stats names the limits hit (the mesh is then coarser, sti
         s.decomposition = cubes ? CellDecomposition::cubes : CellDecomposition::tetrahedra;
         s.bisections = bisections;
         s.max_cubes = max_cubes;
-        ContinuationMesh result;
-        {
-          py::gil_scoped_release unlocked;
-          result = polygonize_continuation(f, s);
-        }
+        std::atomic<bool> cancel{false};
+        s.cancel = &cancel;
+        const ContinuationMesh result = run_interruptible(cancel, [&] { return polygonize_continuation(f, s); });
         py::array_t<double> normals({static_cast<py::ssize_t>(result.normals.size()), py::ssize_t{3}});
         double* p = normals.mutable_data();
         for (const auto& n : result.normals) p = std::copy(n.begin(), n.end(), p);
@@ -203,19 +201,20 @@ the seeds, the limits hit and the per-vertex normals (V, 3).)doc");
         s.steps = steps;
         s.close_factor = close_factor;
         s.max_cubes = max_cubes;
-        RegionMesh result;
         Mesh split_mesh;
         std::vector<std::pair<int, int>> vertex_pairs;
         std::vector<std::uint32_t> origin;
         std::vector<std::array<double, 3>> normals;
-        {
-          py::gil_scoped_release unlocked;
-          result = polygonize_regions(regions, s);
+        std::atomic<bool> cancel{false};
+        s.cancel = &cancel;
+        const RegionMesh result = run_interruptible(cancel, [&] {
+          RegionMesh r = polygonize_regions(regions, s);
           if (split) {
-            split_mesh = split_by_region_pair(result, &vertex_pairs, &origin);
+            split_mesh = split_by_region_pair(r, &vertex_pairs, &origin);
             normals = region_pair_normals(regions, split_mesh, vertex_pairs, 0.01 * cube_size);
           }
-        }
+          return r;
+        });
         py::array_t<std::int32_t> pairs({static_cast<py::ssize_t>(result.regions.size()), py::ssize_t{2}});
         std::int32_t* p = pairs.mutable_data();
         for (const auto& [a, b] : result.regions) {

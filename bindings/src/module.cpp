@@ -10,6 +10,7 @@ PYBIND11_MODULE(_genmod, m) {
   genmod::python::bind_evaluation(m);
   genmod::python::bind_operators(m);
   genmod::python::bind_curves_and_sweeps(m);
+  genmod::python::bind_higher_order_operators(m);
   genmod::python::bind_solvers(m);
   genmod::python::bind_mesh(m);
   genmod::python::bind_gallery(m);

@@ -104,3 +104,45 @@ def test_vectors_and_matrices():
     assert np.allclose(gm.determinant(m)(at), [0.3 * 3 - 0.7 * 2])
     assert np.allclose((m @ gm.inverse(m)).fn(at), [1, 0, 0, 1])
     assert np.allclose(gm.transpose(m)[0, 1](at), [2.0])
+
+
+def test_higher_order_and_solver_operators():
+    rng = np.random.default_rng(4)
+    s = gm.x(2)
+    ramp = gm.integrate(s, gm.Fn(0.0), U, 2)  # the integral of t from 0 to u: u^2 / 2
+    assert np.allclose(gm.Tape(ramp, 1)(np.array([[0.3], [0.8]]))[:, 0], [0.045, 0.32], atol=1e-12)
+    check_bounds_and_derivatives(ramp, 1, rng)
+    plane = gm.table([0.0, 1.0, 1.0, 2.0], [1, 2, 2], gm.cat([U, V]))
+    assert np.allclose(plane(np.array([0.25, 0.5])), [0.75])
+    assert np.allclose(gm.interp(U, gm.Fn(2.0), gm.Fn(4.0))(np.array([0.25])), [2.5])
+    steps = gm.concat(0, U, [gm.Fn(1.0) + 0 * U, gm.Fn(2.0) + 0 * U])
+    assert np.allclose(gm.Tape(steps, 1)(np.array([[0.2], [0.7]]))[:, 0], [1.0, 2.0])
+    assert np.allclose(gm.index([gm.Fn(5.0), gm.Fn(6.0)], U)(np.array([1.5])), [6.0])
+    assert np.isnan(gm.select_case([U > 2.0], [gm.Fn(1.0)])(np.array([0.5]))).all()
+    # m_inverse: the t with t^2 = x(1), i.e. sqrt(x(1)); m_solve the same by the solver.
+    root = gm.inverse(gm.x(0) ** 2, gm.x(1), 0)
+    assert np.allclose(gm.Tape(root, 2)(np.array([[0.0, 0.49]])), [0.7], atol=1e-10)
+    solved = gm.solve_operator(gm.x(0) ** 2 == gm.x(1), [0], np.array([[0.0, 2.0]]), epsilon=1e-10)
+    assert np.allclose(gm.Tape(solved, 2)(np.array([[0.0, 0.49]])), [0.7], atol=1e-8)
+    lowest = gm.minimum_value_operator((gm.x(0) - gm.x(1)) ** 2 + 1.0, [0], np.array([[0.0, 1.0]]))
+    assert np.allclose(gm.Tape(lowest, 2)(np.array([[0.0, 0.3], [0.0, 2.0]]))[:, 0], [1.0, 2.0], atol=1e-6)
+
+
+def test_more_skeletal_fields():
+    cubic = gm.CubicCurve([0, 0, 0], [0, 0, 0], [1, 0, 0], [0, 0, 0])  # the segment (0,0,0)-(1,0,0)
+    d2 = gm.distance2_to_cubic(cubic)
+    assert np.allclose(gm.Tape(d2, 3)(np.array([[0.5, 0.3, 0.0], [2.0, 0.0, 0.0]]))[:, 0], [0.09, 1.0], atol=1e-9)
+    limb = gm.SkeletonLimb([0, 0, 0], [0, 0, 1], 0.2)
+    arms = [gm.SkeletonLimb([0, 0, 1], [0.5, 0, 1.5], 0.2 / math.sqrt(2)),
+            gm.SkeletonLimb([0, 0, 1], [-0.5, 0, 1.5], 0.2 / math.sqrt(2))]
+    tree = gm.ramiform_density(limb, arms)
+    assert gm.Tape(tree, 3)(np.array([0.1, 0.0, 0.5]))[0] > 1.0 > gm.Tape(tree, 3)(np.array([0.5, 0.0, 0.5]))[0]
+    elements = [gm.FieldElement(gm.segment_convolution([float(i), 0, 0], [i + 0.5, 0, 0], 0.2, 0.2),
+                                [float(i), 0, 0], [i + 0.5, 0, 0], 1.0, 0.2, gm.Falloff.gaussian) for i in range(20)]
+    field = gm.culled_field(elements)
+    box = np.array([[3.1, 3.3], [0.0, 0.2], [-0.1, 0.1]])
+    samples = gm.Tape(field, 3)(box[:, 0] + (box[:, 1] - box[:, 0]) * np.random.default_rng(6).random((500, 3)))
+    enclosure = field.bound(box)[0]
+    assert enclosure[0] <= samples.min() and samples.max() <= enclosure[1]
+    blob = gm.grouped_blend([gm.point_source([0, 0, 0], 0.5), gm.point_source([0.6, 0, 0], 0.5)], [[1], [0]])
+    assert gm.Tape(blob, 3)(np.array([0.3, 0.0, 0.0]))[0] < 0  # blended: inside between the two

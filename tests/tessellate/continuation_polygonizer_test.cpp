@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <map>
@@ -360,6 +361,12 @@ TEST(ContinuationPolygonizer, CubeLimitIsReported) {
   // Cut anywhere, its vertices may touch in a point; the edges stay manifold and oriented.
   EXPECT_EQ(v.nonmanifold_edges, 0u);
   EXPECT_TRUE(v.oriented());
+  // A stop request (Python's Ctrl-C) ends the walk and is reported.
+  const std::atomic<bool> stop{true};
+  const ContinuationMesh cancelled =
+      polygonize_continuation(sphere(1.0), {.cube_size = 0.05, .starts = {{1, 0, 0}}, .cancel = &stop});
+  EXPECT_EQ(cancelled.stats.limits_hit, std::vector<std::string>{"cancelled"});
+  EXPECT_LT(cancelled.mesh.triangles.size(), m.mesh.triangles.size());
 }
 
 TEST(ContinuationPolygonizer, BoundsAreReportedAndCutUnboundedSurfaces) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -492,6 +493,12 @@ TEST(NonmanifoldPolygonizer, LimitsAreReported) {
   const RegionMesh cut = polygonize_regions(sphere_regions(1.0), {.cube_size = 0.1, .bounds = {Interval(0.03, 1.23), Interval(-1.23, 1.23), Interval(-1.23, 1.23)}});
   EXPECT_EQ(cut.stats.limits_hit, std::vector<std::string>{"bounds"});
   EXPECT_GT(validate(cut.mesh, {.check_self_intersections = false}).boundary_edges, 0u);
+  // A stop request (Python's Ctrl-C) is reported.
+  const std::atomic<bool> stop{true};
+  const RegionMesh cancelled =
+      polygonize_regions(sphere_regions(1.0), {.cube_size = 0.1, .bounds = cube_box(1.23), .cancel = &stop});
+  EXPECT_EQ(cancelled.stats.limits_hit, std::vector<std::string>{"cancelled"});
+  EXPECT_TRUE(cancelled.mesh.triangles.empty());
 }
 
 TEST(NonmanifoldPolygonizer, BadInputIsRejectedWithMessagesNamingTheProblem) {

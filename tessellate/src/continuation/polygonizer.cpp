@@ -103,20 +103,25 @@ class Polygonizer {
     for (const Point& seed : seeds) {
       start_from(seed);
       while (!stack_.empty()) {
+        if (s_.cancel != nullptr && s_.cancel->load(std::memory_order_relaxed)) {
+          limit_[kCancelled] = true;
+          stack_.clear();
+          break;
+        }
         const Cell c = stack_.back();
         stack_.pop_back();
         polygonize(c);
       }
     }
     out_.stats.cubes = visited_.size();
-    const char* names[3] = {"cubes", "bounds", "lattice"};
-    for (int k = 0; k < 3; ++k)
+    const char* names[4] = {"cubes", "bounds", "lattice", "cancelled"};
+    for (int k = 0; k < 4; ++k)
       if (limit_[k]) out_.stats.limits_hit.emplace_back(names[k]);
     return std::move(out_);
   }
 
  private:
-  enum Limit { kCubes = 0, kBounds = 1, kLattice = 2 };
+  enum Limit { kCubes = 0, kBounds = 1, kLattice = 2, kCancelled = 3 };
 
   Point corner_point(const Cell& c) const {
     return {origin_[0] + s_.cube_size * static_cast<double>(c[0]), origin_[1] + s_.cube_size * static_cast<double>(c[1]),
@@ -356,7 +361,7 @@ class Polygonizer {
   std::unordered_map<std::uint64_t, std::uint32_t> vertex_cache_;
   std::unordered_set<std::uint64_t> visited_;
   std::vector<Cell> stack_;
-  bool limit_[3] = {false, false, false};
+  bool limit_[4] = {false, false, false, false};
   ContinuationMesh out_;
   // Scratch.
   std::array<Point, 8> points_{};

@@ -147,6 +147,10 @@ class Polygonizer {
 
   RegionMesh run() {
     scan_corners();
+    if (cancelled_) {
+      out_.stats.limits_hit.emplace_back("cancelled");
+      return std::move(out_);
+    }
     visited_.assign(static_cast<std::size_t>(n_[0] * n_[1] * n_[2]), 0);
     for (std::int64_t i = 0; i < n_[0]; ++i)
       for (std::int64_t j = 0; j < n_[1]; ++j)
@@ -158,12 +162,18 @@ class Polygonizer {
           if (mixed) enqueue(c);
         }
     while (!queue_.empty()) {
+      if (stop_requested()) {
+        cancelled_ = true;
+        queue_.clear();
+        break;
+      }
       const Coord c = queue_.front();
       queue_.pop_front();
       polygonize(c);
     }
     if (limit_cubes_) out_.stats.limits_hit.emplace_back("cubes");
     if (limit_bounds_) out_.stats.limits_hit.emplace_back("bounds");
+    if (cancelled_) out_.stats.limits_hit.emplace_back("cancelled");
     out_.stats.face_evaluations = face_evaluations_;
     if (s_.close_factor > 0.0) remove_small_triangles(out_, s_.close_factor * out_.stats.eps);
     return std::move(out_);
@@ -192,7 +202,11 @@ class Polygonizer {
       batch.clear();
       keys.clear();
     };
-    for (std::int64_t i = 0; i <= n_[0]; ++i)
+    for (std::int64_t i = 0; i <= n_[0]; ++i) {
+      if (stop_requested()) {  // run() returns at once: no corner is used
+        cancelled_ = true;
+        return;
+      }
       for (std::int64_t j = 0; j <= n_[1]; ++j)
         for (std::int64_t k = 0; k <= n_[2]; ++k) {
           const Coord c{i, j, k};
@@ -200,6 +214,7 @@ class Polygonizer {
           keys.push_back(key(c));
           if (batch.size() == 4096) flush();
         }
+    }
     if (!batch.empty()) flush();
     out_.stats.corner_evaluations = f_.count;
   }
@@ -578,7 +593,8 @@ class Polygonizer {
   std::vector<std::uint8_t> visited_;
   std::size_t cubes_queued_ = 0;
   std::deque<Coord> queue_;
-  bool limit_cubes_ = false, limit_bounds_ = false;
+  bool limit_cubes_ = false, limit_bounds_ = false, cancelled_ = false;
+  bool stop_requested() const { return s_.cancel != nullptr && s_.cancel->load(std::memory_order_relaxed); }
   std::vector<Candidate> candidates_;
   std::vector<EdgeRecord> edges_;
   std::unordered_map<std::uint64_t, std::size_t> edge_index_;

@@ -48,7 +48,8 @@
 // Limits. `max_cubes` bounds the cubes visited; `bounds` (optional) keeps the cubes whose
 // centre lies in the box; the lattice reaches 2^19 - 2 cubes from the first seed in each
 // direction. A limit that stopped the continuation is named in stats.limits_hit ("cubes",
-// "bounds", "lattice"), and the mesh then has boundary edges where it was cut.
+// "bounds", "lattice", or "cancelled" for a stop request), and the mesh then has boundary
+// edges where it was cut.
 //
 // Deterministic: cubes are visited in a fixed order (a stack, neighbours in the order -x +x
 // -y +y -z +z), vertices numbered in order of creation, the seed search uses a fixed
@@ -61,6 +62,7 @@
 #include "genmod/tessellate/box3.hpp"
 #include "genmod/tessellate/triangle_mesh.hpp"
 
+#include <atomic>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -88,6 +90,9 @@ struct ContinuationSettings {
   int bisections = 10;
   // Most cubes visited (polygonized), >= 1.
   std::size_t max_cubes = 10'000'000;
+  // The caller's stop request (not owned; null = none): when it becomes true the walk stops,
+  // reported as "cancelled" (the mesh is cut there). Python's Ctrl-C sets it.
+  const std::atomic<bool>* cancel = nullptr;
   // Samples of the seed search, >= 1, and the half-width of the box searched around a start
   // point (0: 16 cube sizes; else finite and >= cube_size / 2).
   int search_samples = 10'000;

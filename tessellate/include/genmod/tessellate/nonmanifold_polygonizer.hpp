@@ -74,7 +74,8 @@
 // each copy the normal of its own sheet.
 //
 // Limits: `max_cubes` (cubes polygonized) and the lattice (a walk that would leave the bounds)
-// are reported in stats.limits_hit ("cubes", "bounds"); the mesh is then cut there. The
+// are reported in stats.limits_hit ("cubes", "bounds", and "cancelled" for a stop request); the
+// mesh is then cut there. The
 // lattice has at most `max_corners` corners (else std::invalid_argument, naming the sizes).
 //
 // Deterministic: fixed visiting order (cubes with corners in several regions in lattice
@@ -86,6 +87,7 @@
 #include "genmod/tessellate/box3.hpp"
 #include "genmod/tessellate/triangle_mesh.hpp"
 
+#include <atomic>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -107,6 +109,10 @@ struct NonmanifoldSettings {
   double close_factor = 1.0;  // post-process threshold in units of eps; 0 turns it off
   std::size_t max_cubes = 10'000'000;
   std::size_t max_corners = std::size_t{1} << 26;
+  // The caller's stop request (not owned; null = none): when it becomes true the corner scan
+  // or the walk stops, reported as "cancelled" (the mesh is cut there, or empty when the scan
+  // was stopped). Python's Ctrl-C sets it.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 struct NonmanifoldStats {
