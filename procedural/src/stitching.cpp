@@ -101,7 +101,7 @@ std::vector<std::array<VH, 3>> plan_zipper(const PolyMesh& mesh, const std::vect
     for (std::size_t j = 0; j < m; ++j) {
       const double d2 = (mesh.point(loop_a[i]) - mesh.point(loop_b[j])).sqrnorm();
       size2 = std::max(size2, d2);
-      if (d2 < best) {
+      if (d2 < best && !(d2 >= best - 1e-9 * best)) {  // near ties keep the first pair (scale-independent)
         best = d2;
         best_i = i;
         best_j = j;
@@ -126,7 +126,11 @@ std::vector<std::array<VH, 3>> plan_zipper(const PolyMesh& mesh, const std::vect
     } else if (k == m) {
       take_a = true;
     } else {
-      take_a = (mesh.point(a(i + 1)) - mesh.point(c(k))).sqrnorm() <= (mesh.point(a(i)) - mesh.point(c(k + 1))).sqrnorm();
+      // Near ties (within 1e-9 relative, far above rounding) count as ties, so that a scaled
+      // or moved copy of the same loops is joined the same way.
+      const double along_a_rung = (mesh.point(a(i + 1)) - mesh.point(c(k))).sqrnorm();
+      const double along_b_rung = (mesh.point(a(i)) - mesh.point(c(k + 1))).sqrnorm();
+      take_a = along_a_rung <= along_b_rung + 1e-9 * std::max(along_a_rung, along_b_rung);
       const bool a_flat = triangle_area2(mesh, along_a[0], along_a[1], along_a[2]) <= degenerate;
       const bool b_flat = triangle_area2(mesh, along_b[0], along_b[1], along_b[2]) <= degenerate;
       if (take_a && a_flat && !b_flat) take_a = false;
