@@ -16,7 +16,8 @@
 // `levels` distinct argument tuples: with caching on a tree costs `levels` branch misses and
 // 2^levels - 1 - levels hits. The seed (the context's, java.util.Random) jitters every pitch
 // and roll by up to `jitter` of itself: the branches' shapes do not depend on it, their
-// placement does.
+// placement does. The branch calls pass seed 0 (a branch draws no random numbers), so trees of
+// every seed share one set of cached branches.
 //
 // The branches are separate closed components (the mesh as a whole is closed, 2-manifold and
 // free of self-intersections): a child starts a gap beyond its parent's tip along its own
@@ -109,7 +110,12 @@ PolyMesh build_tree(const Arguments& a, const CallContext& context) {
         const double len = trunk_length * std::pow(length_ratio, t.order);
         const double r = trunk_radius * std::pow(radius_ratio, t.order);
         if (t.order > 0) t.frame = t.frame * Affine::translation(Vec3(0, clearance * r, 0));
-        const PolyMesh b = context.call("branch", {{"length", len}, {"radius", r}, {"taper", radius_ratio}, {"sides", sides}});
+        // Seed 0 for every branch: a branch draws no random numbers, so trees of any seed share
+        // the cached branches.
+        CallOptions fixed;
+        fixed.seed = 0;
+        const PolyMesh b =
+            context.call("branch", {{"length", len}, {"radius", r}, {"taper", radius_ratio}, {"sides", sides}}, fixed);
         append_mesh(tree, b, t.frame);
         t.frame = t.frame * Affine::translation(Vec3(0, len, 0));
         ++t.order;
