@@ -13,7 +13,7 @@
 //       2 foot misses cold, 2 hits warm; claim 14), and with its legs cached too.
 // Compare medians of one run; bench/procedural/experiment_ratios.py prints them and the
 // ratios to "off":
-//   genmod_procedural_bench --benchmark_filter='Exp4|Cache' --benchmark_repetitions=10 \
+//   genmod_procedural_bench --benchmark_filter='Exp4|Cache|LegAlone' --benchmark_repetitions=10
 //       --benchmark_out=exp.json --benchmark_out_format=json
 //   python3 bench/procedural/experiment_ratios.py exp.json
 #include "genmod/models/procedural_models.hpp"

@@ -10,8 +10,8 @@
 // figure's right is -x (the thesis's 0-1% x selections), its front +z, the soles at y = 0.
 //
 // Numbers the thesis leaves out (its Arm, Leg, Head listings are missing): the gaps the bridges
-// span (0.08 head at the hips and neck, 0.1 head at the shoulders), the legs' top (0.6 x 0.7
-// head), foot (1 head long with the heel, 0.25 head high), the arms held out level (T pose).
+// span (0.08 head at the hips and neck, 0.1 head at the shoulders), the legs' top (0.7 x 0.78
+// head), foot (about 1.1 head long with the heel, 0.25 head high), the arms held out level (T pose).
 // tummy and butt are lengths in metres added to the torso curves' belly and buttocks control
 // points, as in the listing; gender is not a parameter (the listing declares it unused).
 // Every length is a multiple of the head unit, so two heights give the same mesh scaled.
@@ -57,8 +57,8 @@ PolyMesh build_human(const Arguments& a, const CallContext& context) {
   for (const char* side : {"right", "left"}) {
     const FaceList& hip = std::string(side) == "right" ? hip_r : hip_l;
     const PolyMesh leg = context.call("leg", {{"height", leg_h},
-                                             {"width", 0.6 * H},
-                                             {"depth", 0.7 * H},
+                                             {"width", 0.7 * H},
+                                             {"depth", 0.78 * H},
                                              {"segments", 4},
                                              {"footLength", 0.55 * H},
                                              {"footHeight", 0.25 * H},
