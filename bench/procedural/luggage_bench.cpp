@@ -1,7 +1,10 @@
 // Experiment 6 (research/morkel.md section 4.6, claim 13) on the real model: Morkel's Luggage
-// (models/procedural_models.hpp) on 30 legs, each a call of the cacheable `leg` procedure.
+// (models/procedural_models.hpp) on 30 legs, each a call of the cacheable `leg` procedure, the
+// human leg with its (cacheable) foot, as in the thesis. The tree and human parts of the
+// experiment, and Experiment 4, are in human_tree_bench.cpp.
 //   off:  caching switched off: every leg is built (30 bodies);
-//   cold: the cache emptied before every luggage: 1 miss and 29 hits (the thesis's "first");
+//   cold: the caches emptied before every luggage: 1 leg miss (building 1 foot) and 29 hits
+//         (the thesis's "first");
 //   warm: the legs already stored: 30 hits (the thesis's "remainder").
 // Run with repetitions and compare the medians' ratios to off within one run, e.g.
 //   genmod_procedural_bench --benchmark_filter=Luggage --benchmark_repetitions=10

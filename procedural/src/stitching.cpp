@@ -101,7 +101,7 @@ std::vector<std::array<VH, 3>> plan_zipper(const PolyMesh& mesh, const std::vect
     for (std::size_t j = 0; j < m; ++j) {
       const double d2 = (mesh.point(loop_a[i]) - mesh.point(loop_b[j])).sqrnorm();
       size2 = std::max(size2, d2);
-      if (d2 < best) {
+      if (d2 < best && !(d2 >= best - 1e-9 * best)) {  // near ties keep the first pair (scale-independent)
         best = d2;
         best_i = i;
         best_j = j;
@@ -112,7 +112,13 @@ std::vector<std::array<VH, 3>> plan_zipper(const PolyMesh& mesh, const std::vect
   const double degenerate = 1e-14 * size2;
   std::vector<std::array<VH, 3>> triangles;
   std::size_t i = 0, k = 0;
+  // The rungs the strip starts with, (a(0), c(0..k_first)) and (a(0..i_first), c(0)): a step
+  // that closed a loop onto one of them again would give that rung a third face (a loop used
+  // up while the other is still at its first vertex: a fan round one vertex).
+  std::size_t i_first = 0, k_first = 0;
   while (i < n || k < m) {
+    if (i == 0) k_first = k;
+    if (k == 0) i_first = i;
     const std::array<VH, 3> along_a{a(i), a(i + 1), c(k)}, along_b{a(i), c(k + 1), c(k)};
     bool take_a;
     if (i == n) {
@@ -120,11 +126,18 @@ std::vector<std::array<VH, 3>> plan_zipper(const PolyMesh& mesh, const std::vect
     } else if (k == m) {
       take_a = true;
     } else {
-      take_a = (mesh.point(a(i + 1)) - mesh.point(c(k))).sqrnorm() <= (mesh.point(a(i)) - mesh.point(c(k + 1))).sqrnorm();
+      // Near ties (within 1e-9 relative, far above rounding) count as ties, so that a scaled
+      // or moved copy of the same loops is joined the same way.
+      const double along_a_rung = (mesh.point(a(i + 1)) - mesh.point(c(k))).sqrnorm();
+      const double along_b_rung = (mesh.point(a(i)) - mesh.point(c(k + 1))).sqrnorm();
+      take_a = along_a_rung <= along_b_rung + 1e-9 * std::max(along_a_rung, along_b_rung);
       const bool a_flat = triangle_area2(mesh, along_a[0], along_a[1], along_a[2]) <= degenerate;
       const bool b_flat = triangle_area2(mesh, along_b[0], along_b[1], along_b[2]) <= degenerate;
       if (take_a && a_flat && !b_flat) take_a = false;
       if (!take_a && b_flat && !a_flat) take_a = true;
+      const bool a_repeats = i + 1 == n && k == k_first, b_repeats = k + 1 == m && i == i_first;
+      if (take_a && a_repeats && !b_repeats) take_a = false;
+      if (!take_a && b_repeats && !a_repeats) take_a = true;
     }
     const std::array<VH, 3>& t = take_a ? along_a : along_b;
     if (triangle_area2(mesh, t[0], t[1], t[2]) <= degenerate) degenerate_left = true;

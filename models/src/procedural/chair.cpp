@@ -2,7 +2,7 @@
 // Out procedure. Parameters and defaults are the listing's, less the ones it declares but does
 // not use or that genmod has no counterpart for: numLegs and type (unused), cubic (the disc
 // base: no Disc primitive here), file and fileName (`genmod mesh` writes files). feet calls
-// genmod's `leg` procedure (leg.cpp) where the listing calls the human Leg. segments is an Integer here (the thesis's 6.0 is used as a count). bottomArms is
+// the human `leg` procedure (leg.cpp, with its foot), as the listing calls the human Leg. segments is an Integer here (the thesis's 6.0 is used as a count). bottomArms is
 // Algorithm 5's flag (the listing joins the posts whenever arms is set).
 #include "furniture_tools.hpp"
 #include "procedural_model_defs.hpp"

@@ -16,5 +16,12 @@ ProceduralModelDef chair_definition();
 ProceduralModelDef couch_definition();
 ProceduralModelDef table_definition();
 ProceduralModelDef luggage_definition();
+ProceduralModelDef foot_definition();
+ProceduralModelDef arm_definition();
+ProceduralModelDef torso_definition();
+ProceduralModelDef head_definition();
+ProceduralModelDef human_definition();
+ProceduralModelDef branch_definition();
+ProceduralModelDef tree_definition();
 
 }  // namespace genmod::models::detail

@@ -17,6 +17,13 @@ std::vector<detail::ProceduralModelDef> definitions() {
   defs.push_back(detail::couch_definition());
   defs.push_back(detail::table_definition());
   defs.push_back(detail::luggage_definition());
+  defs.push_back(detail::foot_definition());
+  defs.push_back(detail::arm_definition());
+  defs.push_back(detail::torso_definition());
+  defs.push_back(detail::head_definition());
+  defs.push_back(detail::human_definition());
+  defs.push_back(detail::branch_definition());
+  defs.push_back(detail::tree_definition());
   // Each documented parameter is a declared one, in the same order.
   for (const auto& d : defs) {
     bool same = d.spec.params.size() == d.info.parameter_docs.size() && d.spec.name == d.info.name;
@@ -44,8 +51,11 @@ const ProceduralModel* find_procedural_model(const std::string& name) {
   return nullptr;
 }
 
-void register_procedural_models(ProcedureRegistry& registry) {
-  for (auto& d : definitions()) registry.add(std::move(d.spec));
+void register_procedural_models(ProcedureRegistry& registry, const std::function<void(ProcedureSpec&)>& adjust) {
+  for (auto& d : definitions()) {
+    if (adjust) adjust(d.spec);
+    registry.add(std::move(d.spec));
+  }
 }
 
 ProcedureRegistry& procedural_registry() {

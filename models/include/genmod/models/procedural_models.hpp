@@ -3,10 +3,10 @@
 // face sets, chained extrusions, adaptive sqrt(2) subdivision of cushions, curve shaping of a
 // chair back or a lid, and bridges (the stitching tool on one mesh) for arms and legs.
 //
-//   leg      the cacheable Out procedure the Luggage stands on: a column extruded from a box,
-//            a foot extruded forward, everything but the flat top subdivided and smoothed. The
-//            thesis reuses its human Leg/Foot here; genmod has no human model, so this simple
-//            leg stands in for it (one signature, one cache, as Experiment 6 needs).
+//   leg      the human leg with its foot (the thesis's #Leg + Foot), cacheable: a column in
+//            four pieces shaped onto thigh/knee/calf/ankle profile curves and subdivided, and a
+//            `foot` call bridged under the ankle. As in the thesis the Luggage (and the chair's
+//            feet) reuse it; its flat top "legtop" is what a caller bridges to.
 //   chair    Algorithm 5: a seat grown from one box by extrusions along x and z, a back grown
 //            up from the rear row, a subdivided cushion, four legs (extruded, or with `feet`
 //            four calls of `leg` bridged under the corners), optional arms (arm rests extruded
@@ -19,6 +19,24 @@
 //   luggage  Algorithm 7: a chest grown by extrusions with an arched lid (curve shaping), on
 //            numLegs legs, each a call of `leg` with the same arguments and the inherited seed,
 //            so with caching on the leg costs one miss and numLegs - 1 hits (claim 12).
+//   foot     Algorithm 4, cacheable: a grid of toe and gap columns, the toes extruded forward
+//            (the big toe the longest), mirrored for the right foot; flat top "foottop".
+//   arm      an arm held out along +x (upper arm, elbow, forearm, wrist, flat hand) on a flat
+//            root quad "armroot".
+//   torso    Algorithm 2 and the TorsoCurves of App. C.2: a 7 x 12 x 6 block of cells shaped
+//            by the side, front and back Bezier curves (tummy and butt move the belly's and
+//            buttocks' control points), or the smoothed egg (cubical = false); the faces the
+//            limbs attach to are labelled neck, shoulder_r/l, hip_r/l.
+//   head     the neck and the head (a smoothed grid box with a nose) on a flat root quad.
+//   human    Algorithm 1: torso, head, two arms and two legs (left and right: two foot
+//            builds) bridged together in Loomis's proportions, 8 heads tall; height (feet),
+//            tummy, butt, cubical. Every length is a multiple of the head unit, so heights
+//            give scaled copies of one mesh.
+//   branch   a cacheable meshed cylinder (frustum): the tree's branches.
+//   tree     an L-system tree (A -> F/[+A][-A], levels rewrites, seeded jitter of the angles),
+//            cacheable, its 2^levels - 1 branches `branch` calls with one argument tuple per
+//            order (levels misses per tree). Branches are separate closed components a small
+//            gap apart (no overlaps).
 //
 // Every model's mesh is closed, 2-manifold, oriented outward and free of self-intersections
 // (tests/models/procedural_models_test.cpp checks this with the CGAL validator), and the same
@@ -37,6 +55,7 @@
 #include "genmod/tessellate/mesh.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -51,13 +70,15 @@ struct ProceduralModel {
   std::vector<std::pair<std::string, std::string>> parameter_docs;
 };
 
-// leg, chair, couch, table, luggage, in that order.
+// leg, chair, couch, table, luggage, foot, arm, torso, head, human, branch, tree, in that order.
 const std::vector<ProceduralModel>& procedural_gallery();
 // nullptr when no procedural model has that name.
 const ProceduralModel* find_procedural_model(const std::string& name);
 
-// Adds the five procedures to `registry` (std::invalid_argument if one of the names is taken).
-void register_procedural_models(ProcedureRegistry& registry);
+// Adds the procedures to `registry` (std::invalid_argument if one of the names is taken).
+// `adjust`, when given, may change each spec before it is added (benchmarks switch the
+// cacheable flag of single procedures, e.g. the human with only its feet cached).
+void register_procedural_models(ProcedureRegistry& registry, const std::function<void(ProcedureSpec&)>& adjust = {});
 // A process-wide registry holding exactly these procedures, registered on first use (thread
 // safe). Its caching switch and cache counters are shared by all users of this registry; tests
 // and benchmarks that count cache hits use a registry of their own.

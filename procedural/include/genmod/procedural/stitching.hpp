@@ -22,10 +22,14 @@ namespace genmod {
 //   * alignment: the closest pair (a_i, b_j) (squared distances, the first pair in loop order
 //     on ties; each loop starts at its smallest vertex index) is the first rung;
 //   * zipper: from rung (a, b), the next triangle advances along A when the new rung
-//     |a' - b| is shorter than |a - b'|, else along B; ties advance along A; a choice that
+//     |a' - b| is shorter than |a - b'|, else along B; ties advance along A (here and in the
+//     alignment, squared lengths within 1e-9 relative are ties, so that scaled or moved copies
+//     of the loops are joined alike); a choice that
 //     would give a zero-area triangle (twice its area at most 1e-14 times the largest squared
-//     distance between a vertex of A and one of B) is avoided when the other is not; a loop
-//     that is used up forces the other.
+//     distance between a vertex of A and one of B) is avoided when the other is not; a step
+//     that would use up a loop while the other is still at its first rung's vertex (the rung
+//     it would add is one of the first ones: a third face on it) is not taken when the other
+//     step is possible; a loop that is used up forces the other.
 // On a closed mesh the genus goes up by one when both loops are on one component, and two
 // components become one otherwise.
 // An empty sel_a or sel_b changes nothing and returns no faces (there is nothing to join).
