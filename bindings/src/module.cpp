@@ -16,4 +16,5 @@ PYBIND11_MODULE(_genmod, m) {
   genmod::python::bind_gallery(m);
   genmod::python::bind_batch(m);
   genmod::python::bind_procedural(m);
+  genmod::python::bind_procedure_tools(m);
 }

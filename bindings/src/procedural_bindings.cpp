@@ -2,6 +2,7 @@
 // procedures with their typed parameters and signatures, called with named arguments and a
 // seed to a triangle mesh, and the procedure caches (switch, counters, clearing).
 #include "bindings.hpp"
+#include "param_values.hpp"
 
 #include "genmod/models/procedural_models.hpp"
 #include "genmod/procedural/procedure.hpp"
@@ -14,9 +15,8 @@
 namespace py = pybind11;
 
 namespace genmod::python {
-namespace {
 
-py::object to_python(const ParamValue& v) {
+py::object param_to_python(const ParamValue& v) {
   switch (v.type()) {
     case ParamType::Double: return py::float_(v.as_double());
     case ParamType::Integer: return py::int_(v.as_integer());
@@ -32,7 +32,7 @@ py::object to_python(const ParamValue& v) {
 
 // A Python value as the parameter value of the same kind (bool before int: a Python bool is an
 // int); the registry then checks it against the declared type and names the parameter.
-ParamValue from_python(const std::string& procedure, const std::string& name, const py::handle& v) {
+ParamValue param_from_python(const std::string& procedure, const std::string& name, const py::handle& v) {
   if (py::isinstance<py::bool_>(v)) return ParamValue(v.cast<bool>());
   if (py::isinstance<py::int_>(v)) return ParamValue(v.cast<std::int64_t>());
   if (py::isinstance<py::float_>(v)) return ParamValue(v.cast<double>());
@@ -46,8 +46,6 @@ ParamValue from_python(const std::string& procedure, const std::string& name, co
                               " (expected a number, a bool, a string or a 3-vector)");
 }
 
-}  // namespace
-
 void bind_procedural(py::module_& m) {
   m.def("_procedural_models", [] {
     const ProcedureRegistry& registry = models::procedural_registry();
@@ -59,7 +57,7 @@ void bind_procedural(py::module_& m) {
         std::string doc;
         for (const auto& [name, text] : model.parameter_docs)
           if (name == p.name) doc = text;
-        params.append(py::make_tuple(p.name, std::string(java_type_name(p.type)), to_python(*p.default_value), doc));
+        params.append(py::make_tuple(p.name, std::string(java_type_name(p.type)), param_to_python(*p.default_value), doc));
       }
       out.append(py::make_tuple(model.name, model.description, registry.signature(model.name), params, spec.cacheable));
     }
@@ -71,7 +69,7 @@ void bind_procedural(py::module_& m) {
     NamedArgs named;
     for (const auto& [key, value] : args) {
       const std::string k = py::str(key);
-      named.emplace_back(k, from_python(name, k, value));
+      named.emplace_back(k, param_from_python(name, k, value));
     }
     py::gil_scoped_release unlocked;
     return models::mesh_procedural_model(name, named, seed);

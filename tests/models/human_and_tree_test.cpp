@@ -24,6 +24,7 @@ namespace {
 
 using genmod::test::expect_valid_closed;
 using genmod::test::mesh_difference;
+using genmod::test::refusal;
 
 Context seeded(std::int64_t seed) {
   Context c;
@@ -36,16 +37,6 @@ PolyMesh build(const std::string& name, const NamedArgs& args = {}, std::int64_t
 }
 
 std::array<Vec3, 2> box_of(const PolyMesh& mesh) { return bounds(mesh, all_faces(mesh)); }
-
-template <class F>
-std::string refusal(F f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // A registry of its own (cache counters start at zero), optionally with some procedures'
 // cacheable flag switched off.

@@ -21,6 +21,7 @@ namespace {
 
 using genmod::test::expect_valid_closed;
 using genmod::test::mesh_difference;
+using genmod::test::refusal;
 
 PolyMesh build(const std::string& name, const NamedArgs& args = {}, std::int64_t seed = 0) {
   Context c;
@@ -38,17 +39,6 @@ std::array<Vec3, 2> box_of(const PolyMesh& mesh) { return bounds(mesh, all_faces
 double extent(const PolyMesh& mesh, int axis) {
   const auto b = box_of(mesh);
   return b[1][axis] - b[0][axis];
-}
-
-// The message of the std::invalid_argument `f` throws ("" when it does not throw).
-template <class F>
-std::string refusal(F f) {
-  try {
-    f();
-  } catch (const std::invalid_argument& e) {
-    return e.what();
-  }
-  return "";
 }
 
 TEST(ProceduralModels, GalleryListsTheProceduresWithTheirParameters) {

@@ -1,5 +1,5 @@
-// Helpers for the mesh tool tests: bitwise mesh equality, selection by face centroids, and a
-// lone unit quad (an open mesh).
+// Helpers for the mesh tool and procedural model tests: bitwise mesh equality, selection by face
+// centroids, a lone unit quad (an open mesh), and the message of a refused call.
 #pragma once
 
 #include "genmod/procedural/poly_mesh.hpp"
@@ -8,10 +8,22 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 namespace genmod::test {
+
+// The message of the std::invalid_argument `f` throws ("" when it does not throw).
+template <class F>
+std::string refusal(F f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
 
 // Empty when a and b are bitwise the same mesh (points, face vertex lists, labels, deletions),
 // else what differs first.

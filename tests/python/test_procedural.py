@@ -52,3 +52,43 @@ def test_bad_values_name_the_procedure_and_the_parameter():
         procedural.mesh("luggage", numLegs="four")
     with pytest.raises(ValueError, match="no procedural model named 'sofa'"):
         procedural.mesh("sofa")
+
+
+def test_procedures_written_in_python_use_the_mesh_tools_and_the_cache():
+    reg = procedural.Registry()
+    built = []
+
+    def post(args, ctx):
+        built.append(args["height"])
+        m = procedural.PolyMesh.grid_box((0, 0, 0), (0.2, 0.2, 0.2), 2, "post")
+        top = procedural.select(m, m.faces(), (0, 1, 0, 1, 1, 1))
+        procedural.extrude(m, top, (0, 0, args["height"]))
+        return m
+
+    def table(args, ctx):
+        m = procedural.PolyMesh.grid_box((0, 0, 0), (2, 1, 0.1), 4, "top")
+        legs = args["legs"]
+        posts = [ctx.call("post", height=args["leg_height"]) for _ in range(legs)]
+        assert all(p.is_closed_manifold() for p in posts) and ctx.seed == 7
+        bottom = procedural.select(m, m.faces(), (0, 1, 0, 1, 0, 0))
+        procedural.sqrt2_subdivide(m, bottom, 1, 0.0)
+        return m
+
+    reg.add("post", post, params={"height": 0.5}, cacheable=True)
+    reg.add("table", table, params={"legs": 4, "leg_height": 0.7})
+    assert reg.signature("table") == "OUT:Integer,legs:Double,leg_height"
+    t = reg.call("table", seed=7, legs=6)
+    assert t.is_closed_manifold() and t.to_mesh().validate()["valid"]
+    assert built == [0.7]  # one post built, five served from the cache
+    assert reg.cache_stats("post") == {"hits": 5, "misses": 1, "evictions": 0, "entries": 1}
+    # A post straight from the registry: extruding the 4 top quads of a closed box adds
+    # (+b, +2b, +b) to (V, E, F) for the b = 8 boundary edges of the selection.
+    p = reg.call("post")
+    v0, e0, f0 = procedural.PolyMesh.grid_box((0, 0, 0), (0.2, 0.2, 0.2), 2).counts
+    assert p.counts == (v0 + 8, e0 + 16, f0 + 8)
+    with pytest.raises(ValueError, match="'table'.*'legs'"):
+        reg.call("table", legs=2.5)
+    with pytest.raises(ValueError, match="'table'.*'color'"):
+        reg.call("table", color="red")
+    with pytest.raises(ValueError, match="not in the mesh"):
+        procedural.extrude(p, [10_000], (0, 0, 1))

@@ -7,10 +7,32 @@ mesh, and cacheable procedures (the Luggage's legs) are built once per distinct 
     chair = procedural.mesh("chair", arms=True, backLength=2.0)
     luggage = procedural.mesh("luggage", seed=3, numLegs=12)
     procedural.cache_stats("leg")                    # {'hits': 11, 'misses': 1, ...}
+
+Procedures of your own, in Python, on the same mesh tools:
+
+    reg = procedural.Registry()
+    def block(args, ctx):
+        m = procedural.PolyMesh.grid_box((0, 0, 0), (1, 1, 1), 4, "block")
+        top = procedural.select(m, m.faces(), (0, 1, 0, 1, 1, 1))
+        procedural.extrude(m, top, (0, 0, args["height"]))
+        return m
+    reg.add("block", block, params={"height": 0.5}, cacheable=True)
+    mesh = reg.call("block", height=2.0).to_mesh()     # a genmod.Mesh
 """
 from dataclasses import dataclass
 
 from . import _genmod
+from ._genmod import _procedural as _tools
+
+PolyMesh = _tools.PolyMesh
+Registry = _tools.Registry
+CallContext = _tools.CallContext
+select = _tools.select
+extrude = _tools.extrude
+sqrt2_subdivide = _tools.sqrt2_subdivide
+shape_to_curve = _tools.shape_to_curve
+bridge = _tools.bridge
+stitch = _tools.stitch
 
 
 @dataclass(frozen=True)

@@ -43,18 +43,13 @@ const char* side_name(double v) { return std::isnan(v) ? "not a number (outside)
 
 std::span<const double> Evaluator::eval(std::span<const std::array<double, 3>> points) {
   const std::size_t n = points.size();
-  x_.resize(n);
-  y_.resize(n);
-  z_.resize(n);
   out_.resize(n);
-  for (std::size_t p = 0; p < n; ++p) {
-    x_[p] = points[p][0];
-    y_[p] = points[p][1];
-    z_[p] = points[p][2];
-  }
-  const double* inputs[3] = {x_.data(), y_.data(), z_.data()};
+  if (n == 0) return {};
+  // The points are read in place: coordinate k of point p is points[p][k], a stride of 3.
+  static_assert(sizeof(std::array<double, 3>) == 3 * sizeof(double));
+  const double* inputs[3] = {&points[0][0], &points[0][1], &points[0][2]};
   double* outputs[1] = {out_.data()};
-  batch_.eval(f_, inputs, n, outputs);
+  batch_.eval(f_, inputs, n, outputs, 3, 1);
   count += n;
   return {out_.data(), n};
 }

@@ -28,7 +28,7 @@ class Evaluator {
  private:
   const Tape& f_;
   BatchEvaluator batch_;
-  std::vector<double> x_, y_, z_, out_;
+  std::vector<double> out_;
 };
 
 // A point on the surface near `start`: f is sampled at the start and at points of a box

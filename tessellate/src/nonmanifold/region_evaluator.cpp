@@ -35,20 +35,15 @@ RegionEvaluator::RegionEvaluator(std::span<const Fn> regions)
 
 std::span<const int> RegionEvaluator::regions(std::span<const Point> points) {
   const std::size_t n = points.size();
-  x_.resize(n);
-  y_.resize(n);
-  z_.resize(n);
   values_.resize(n * static_cast<std::size_t>(k_));
   out_.resize(n);
-  for (std::size_t p = 0; p < n; ++p) {
-    x_[p] = points[p][0];
-    y_[p] = points[p][1];
-    z_[p] = points[p][2];
-  }
-  const double* inputs[3] = {x_.data(), y_.data(), z_.data()};
+  if (n == 0) return {};
+  // The points are read in place: coordinate k of point p is points[p][k], a stride of 3.
+  static_assert(sizeof(std::array<double, 3>) == 3 * sizeof(double));
+  const double* inputs[3] = {&points[0][0], &points[0][1], &points[0][2]};
   outputs_.resize(static_cast<std::size_t>(k_));
   for (int i = 0; i < k_; ++i) outputs_[static_cast<std::size_t>(i)] = values_.data() + static_cast<std::size_t>(i) * n;
-  if (n > 0) batch_.eval(tape_, inputs, n, outputs_);
+  batch_.eval(tape_, inputs, n, outputs_, 3, 1);
   for (std::size_t p = 0; p < n; ++p) out_[p] = arg_max(values_.data() + p, n, k_);
   count += n;
   return {out_.data(), n};

@@ -33,7 +33,7 @@ class RegionEvaluator {
   int k_;
   Tape tape_;
   BatchEvaluator batch_;
-  std::vector<double> x_, y_, z_, values_;
+  std::vector<double> values_;
   std::vector<double*> outputs_;
   std::vector<int> out_;
 };
