@@ -1,7 +1,7 @@
 // Global minimization (Algorithm 5.2) on standard test functions: time per solve, with the
 // bracket width reached, boxes processed and candidate boxes as counters.
 #include "genmod/solvers/minimizer.hpp"
-#include "genmod/solvers/minimizer_problems.hpp"
+#include "solvers/minimizer_problems.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -26,6 +26,7 @@
 
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
+#include "model_definitions.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,6 +8,7 @@
 // cross section's x runs from rail1 (x = -1) to rail2 (x = +1); its y is world z.
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/sweep.hpp"
+#include "model_definitions.hpp"
 
 namespace genmod::models {
 

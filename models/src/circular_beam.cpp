@@ -9,6 +9,7 @@
 // width height radius angle (Pappus: the rectangle's centroid travels radius angle).
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/sweep.hpp"
+#include "model_definitions.hpp"
 
 #include <numbers>
 #include <stdexcept>

@@ -6,6 +6,7 @@
 // circular fillets (offset curves intersected).
 #include "genmod/models/gallery.hpp"
 #include "genmod/solvers/cpg.hpp"
+#include "model_definitions.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -10,6 +10,7 @@
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/higher_order.hpp"
 #include "genmod/solvers/cross_section_matching.hpp"
+#include "model_definitions.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -4,6 +4,7 @@
 //   doorknob = m_profile(cross, profile);
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/sweep.hpp"
+#include "model_definitions.hpp"
 
 #include <numbers>
 

@@ -15,6 +15,7 @@
 #include "genmod/kernel/tape.hpp"
 #include "genmod/operators/sweep.hpp"
 #include "genmod/operators/vector.hpp"
+#include "model_definitions.hpp"
 
 #include <array>
 #include <cmath>

@@ -1,5 +1,6 @@
 // The gallery registry, parameter resolution and meshing.
 #include "genmod/models/gallery.hpp"
+#include "model_definitions.hpp"
 
 #include <cmath>
 #include <cstdint>

@@ -13,6 +13,7 @@
 #include "genmod/operators/higher_order.hpp"
 #include "genmod/operators/sweep.hpp"
 #include "genmod/operators/vector.hpp"
+#include "model_definitions.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -26,6 +26,7 @@
 #include "genmod/operators/warp.hpp"
 
 #include "coons_face.hpp"
+#include "model_definitions.hpp"
 
 #include <algorithm>
 #include <array>

@@ -7,6 +7,7 @@
 // a thin stem and a top flare.
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/sweep.hpp"
+#include "model_definitions.hpp"
 
 #include <cmath>
 #include <numbers>

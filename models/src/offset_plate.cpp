@@ -16,6 +16,7 @@
 #include "genmod/operators/offset.hpp"
 
 #include "coons_face.hpp"
+#include "model_definitions.hpp"
 
 #include <array>
 #include <cmath>

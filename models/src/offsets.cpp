@@ -9,6 +9,7 @@
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/higher_order.hpp"
 #include "genmod/operators/offset.hpp"
+#include "model_definitions.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -5,6 +5,7 @@
 // Substitute curves: a regular polygon cross section and a chamfered slab profile.
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/sweep.hpp"
+#include "model_definitions.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -14,6 +14,7 @@
 // The curves are models/curves/screwdriver_phillips_{radius,depth}.crv.
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/path.hpp"
+#include "model_definitions.hpp"
 
 #include <cmath>
 #include <stdexcept>

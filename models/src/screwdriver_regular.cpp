@@ -11,6 +11,7 @@
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/higher_order.hpp"
 #include "genmod/operators/path.hpp"
+#include "model_definitions.hpp"
 
 #include <algorithm>
 #include <stdexcept>

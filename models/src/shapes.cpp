@@ -1,6 +1,7 @@
 // Standard shapes of operators/shapes.hpp as gallery models.
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/shapes.hpp"
+#include "model_definitions.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -11,6 +11,7 @@
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/higher_order.hpp"
 #include "genmod/operators/vector.hpp"
+#include "model_definitions.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -11,6 +11,7 @@
 // bowl depth and the thickness.
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/offset.hpp"
+#include "model_definitions.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -8,6 +8,7 @@
 // axis to world z. The frame only (no throat or handle): a closed tube, periodic in u and v.
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/sweep.hpp"
+#include "model_definitions.hpp"
 
 #include <algorithm>
 #include <stdexcept>

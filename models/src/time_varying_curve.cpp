@@ -15,6 +15,7 @@
 #include "genmod/operators/integrate.hpp"
 #include "genmod/operators/vector.hpp"
 #include "genmod/solvers/inverse_operator.hpp"
+#include "model_definitions.hpp"
 
 #include <numbers>
 

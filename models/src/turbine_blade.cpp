@@ -13,6 +13,7 @@
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/higher_order.hpp"
 #include "genmod/operators/transform.hpp"
+#include "model_definitions.hpp"
 
 #include <numbers>
 

@@ -13,6 +13,7 @@
 #include "genmod/models/gallery.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/operators/sweep.hpp"
+#include "model_definitions.hpp"
 
 #include <cmath>
 #include <numbers>

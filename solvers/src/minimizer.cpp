@@ -1,7 +1,7 @@
 // Algorithm 5.2 of snyder.md section 4.13: best-first branch and bound with a verified upper
 // bound, the monotonicity test of section 4.15 and the termination rules of section 4.14.
 #include "genmod/solvers/minimizer.hpp"
-#include "genmod/solvers/minimizer_detail.hpp"
+#include "minimizer_detail.hpp"
 
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/solvers/constraint_system.hpp"

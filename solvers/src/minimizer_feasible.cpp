@@ -1,5 +1,5 @@
 // Certified feasible points for exact equality constraints (see minimizer_detail.hpp).
-#include "genmod/solvers/minimizer_detail.hpp"
+#include "minimizer_detail.hpp"
 
 #include <algorithm>
 #include <cmath>

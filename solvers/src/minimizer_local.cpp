@@ -1,6 +1,6 @@
 // Local search and constraint rewriting for the minimizer (see minimizer_detail.hpp).
 #include "genmod/solvers/minimizer.hpp"
-#include "genmod/solvers/minimizer_detail.hpp"
+#include "minimizer_detail.hpp"
 
 #include "genmod/kernel/dag.hpp"
 

@@ -1,6 +1,6 @@
 // Global minimization of standard test functions with known global minima and minimizers.
 #include "genmod/solvers/minimizer.hpp"
-#include "genmod/solvers/minimizer_problems.hpp"
+#include "solvers/minimizer_problems.hpp"
 
 #include <gtest/gtest.h>
 
