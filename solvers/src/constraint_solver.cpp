@@ -10,7 +10,6 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <deque>
 #include <memory>
@@ -369,7 +368,7 @@ void build_components(const Problem& p, const Box& search, SolveResult& r) {
 
 SolveResult solve(const Fn& constraint, std::span<const int> unknowns, const Box& box, const SolveOptions& options,
                   const FreeParameters& parameters) {
-  const auto start = std::chrono::steady_clock::now();
+  const LimitWatch watch(options.limits);
   validate(box, unknowns, options, parameters);
   const Problem problem(constraint, unknowns, parameters, options);
   const SearchLimits& lim = options.limits;
@@ -391,21 +390,10 @@ SolveResult solve(const Fn& constraint, std::span<const int> unknowns, const Box
   std::vector<Item> batch;
   std::vector<Outcome> outcomes;
   bool depth_hit = false;
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
 
   while (!work.empty()) {
-    if (lim.time_limit > 0.0 && elapsed() > lim.time_limit) {
-      rep.limit = LimitHit::TimeLimit;
-      break;
-    }
-    if (lim.cancelled()) {
-      rep.limit = LimitHit::Cancelled;
-      break;
-    }
-    if (rep.boxes_processed >= lim.max_boxes) {
-      rep.limit = LimitHit::MaxBoxes;
-      break;
-    }
+    rep.limit = watch.reached(rep.boxes_processed);
+    if (rep.limit != LimitHit::None) break;
     const std::size_t k = std::min({options.batch, work.size(), lim.max_boxes - rep.boxes_processed});
     batch.clear();
     for (std::size_t i = 0; i < k; ++i) batch.push_back(work.pop());
@@ -455,7 +443,7 @@ SolveResult solve(const Fn& constraint, std::span<const int> unknowns, const Box
                                  }),
                      result.boxes.end());
   build_components(problem, box, result);
-  rep.seconds = elapsed();
+  rep.seconds = watch.seconds();
   return result;
 }
 

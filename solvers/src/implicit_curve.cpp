@@ -10,7 +10,6 @@
 #include "union_find.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <deque>
 #include <map>
@@ -42,7 +41,6 @@ std::string_view curve_end_name(CurveEnd e) noexcept {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 // Boxes closer than tol in every side are one point (aggregation's touches()). Boxes of one
 // true point always overlap (each holds it); tol also merges a crossing found at distance ~
@@ -120,7 +118,7 @@ class CurveBuilder {
   SolveOptions point_opt_;
   double merge_tol_ = 0;
   std::vector<bool> periodic_;
-  Clock::time_point start_ = Clock::now();
+  LimitWatch watch_{opt_.limits};
 
   std::vector<std::optional<IntervalNewton>> newton_;  // per fixed coordinate
   std::vector<Box> points_;  // boundary-intersection boxes (n sides each)
@@ -132,14 +130,7 @@ class CurveBuilder {
 bool CurveBuilder::limit_reached() {
   SearchReport& r = out_.report;
   if (r.limit != LimitHit::None && r.limit != LimitHit::MaxDepth) return true;
-  LimitHit hit = LimitHit::None;
-  if (r.boxes_processed >= opt_.limits.max_boxes)
-    hit = LimitHit::MaxBoxes;
-  else if (opt_.limits.time_limit > 0 &&
-           std::chrono::duration<double>(Clock::now() - start_).count() > opt_.limits.time_limit)
-    hit = LimitHit::TimeLimit;
-  else if (opt_.limits.cancelled())
-    hit = LimitHit::Cancelled;
+  const LimitHit hit = watch_.reached(r.boxes_processed);
   if (hit == LimitHit::None) return false;
   if (r.limit == LimitHit::None) r.limit = hit;
   return true;
@@ -350,7 +341,7 @@ ImplicitCurve CurveBuilder::run() {
     for (Link& l : links) links_.push_back(std::move(l));
   }
   assemble();
-  out_.report.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+  out_.report.seconds = watch_.seconds();
   return std::move(out_);
 }
 

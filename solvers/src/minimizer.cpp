@@ -10,7 +10,6 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -173,7 +172,7 @@ class Search {
   double u_ = kInf;
   std::vector<double> best_;
   MinimizeResult result_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  LimitWatch watch_{opt_.limits};
 };
 
 Feasibility Search::constraint_on(std::span<const Interval> box) {
@@ -361,22 +360,10 @@ double Search::lower_bound() const {
 
 bool Search::limit_reached() {
   SearchReport& r = result_.report;
-  if (r.boxes_processed >= opt_.limits.max_boxes) {
-    if (r.limit == LimitHit::None) r.limit = LimitHit::MaxBoxes;
-    return true;
-  }
-  if (opt_.limits.cancelled()) {
-    if (r.limit == LimitHit::None) r.limit = LimitHit::Cancelled;
-    return true;
-  }
-  if (opt_.limits.time_limit > 0.0 && (r.boxes_processed % 16 == 0)) {
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    if (s >= opt_.limits.time_limit) {
-      if (r.limit == LimitHit::None) r.limit = LimitHit::TimeLimit;
-      return true;
-    }
-  }
-  return false;
+  const LimitHit hit = watch_.reached(r.boxes_processed);
+  if (hit == LimitHit::None) return false;
+  if (r.limit == LimitHit::None) r.limit = hit;
+  return true;
 }
 
 void Search::step_callback() {
@@ -537,7 +524,7 @@ MinimizeResult Search::run() {
   result_.best_point = best_;
   result_.delta_reached = result_.feasible_found && !result_.minimum.is_empty() &&
                           result_.minimum.hi() - result_.minimum.lo() <= opt_.delta;
-  report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  report.seconds = watch_.seconds();
   return std::move(result_);
 }
 

@@ -4,7 +4,6 @@
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/solvers/minimizer.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <deque>
 #include <stdexcept>
@@ -47,15 +46,11 @@ class OffsetSearch {
   }
 
   OffsetResult run() {
-    const auto start = std::chrono::steady_clock::now();
+    const LimitWatch watch(options_.limits);
     OffsetResult out;
     std::deque<Pending> work{{region_, 0}};
     while (!work.empty()) {
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      LimitHit hit = LimitHit::None;
-      if (out.report.boxes_processed >= options_.limits.max_boxes) hit = LimitHit::MaxBoxes;
-      else if (options_.limits.time_limit > 0.0 && elapsed > options_.limits.time_limit) hit = LimitHit::TimeLimit;
-      else if (options_.limits.cancelled()) hit = LimitHit::Cancelled;
+      const LimitHit hit = watch.reached(out.report.boxes_processed);
       if (hit != LimitHit::None) {
         out.report.limit = hit;
         for (Pending& p : work) out.boxes.push_back({std::move(p.box), OffsetBoxStatus::Boundary});
@@ -81,7 +76,7 @@ class OffsetSearch {
       work.push_back({std::move(lo), p.depth + 1});
       work.push_back({std::move(hi), p.depth + 1});
     }
-    out.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.report.seconds = watch.seconds();
     return out;
   }
 

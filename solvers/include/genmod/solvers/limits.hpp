@@ -1,8 +1,10 @@
-// Resource limits shared by the interval solvers, and the report of what a search used.
-// Every search stops at its limits and says which one it hit; nothing is dropped silently.
+// Resource limits shared by the interval solvers, the report of what a search used, and the
+// watch that checks them. Every search stops at its limits and says which one it hit; nothing
+// is dropped silently.
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -24,6 +26,30 @@ struct SearchLimits {
 enum class LimitHit : std::uint8_t { None, MaxBoxes, MaxDepth, TimeLimit, Cancelled };
 
 std::string_view limit_name(LimitHit hit) noexcept;
+
+// One search's use of its limits, shared by every solver so that they stop alike: started when
+// constructed, reached() names the first of the box, time and cancel limits that has been hit
+// (the depth limit is a property of one box, checked by each search where it splits).
+class LimitWatch {
+ public:
+  explicit LimitWatch(const SearchLimits& limits) noexcept
+      : limits_(limits), start_(std::chrono::steady_clock::now()) {}
+  // MaxBoxes once `boxes` >= max_boxes, TimeLimit once time_limit > 0 seconds have passed,
+  // Cancelled once the cancel flag is set; otherwise None.
+  LimitHit reached(std::size_t boxes) const noexcept {
+    if (boxes >= limits_.max_boxes) return LimitHit::MaxBoxes;
+    if (limits_.time_limit > 0.0 && seconds() > limits_.time_limit) return LimitHit::TimeLimit;
+    if (limits_.cancelled()) return LimitHit::Cancelled;
+    return LimitHit::None;
+  }
+  double seconds() const noexcept {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  SearchLimits limits_;
+  std::chrono::steady_clock::time_point start_;
+};
 
 struct SearchReport {
   std::size_t boxes_processed = 0;
