@@ -103,3 +103,28 @@ TEST(TrimmedCsg, UnionAndIntersectionOfSpheres) {
 
 }  // namespace
 }  // namespace genmod::models
+
+namespace genmod::models {
+namespace {
+
+// (A - B) - C (§5.5): the drilled sphere minus a second bore that does not meet the first:
+// one closed, valid mesh of genus 2, every seam vertex shared by two pieces, and less volume
+// than the drilled sphere.
+TEST(TrimmedCsg, DrilledTwiceIsValidGenusTwo) {
+  const TrimmedCsgResult r = mesh_csg_model("drilled_sphere_twice");
+  const MeshValidity v = validate(r.mesh);
+  EXPECT_TRUE(v.valid()) << describe(v);
+  EXPECT_EQ(v.components, 1u);
+  EXPECT_EQ(v.euler_characteristic, -2);
+  EXPECT_EQ(r.curve_components, 4u);
+  ASSERT_EQ(r.triangles_per_surface.size(), 3u);
+  for (std::size_t t : r.triangles_per_surface) EXPECT_GT(t, 0u);
+  EXPECT_EQ(r.seam_vertices_in_both, r.seam.size());
+  const MeshValidity once = validate(drilled().mesh);
+  EXPECT_LT(v.volume, once.volume);
+  // The second bore removes about pi r^2 times its length inside the sphere (r = 0.2).
+  EXPECT_NEAR(once.volume - v.volume, std::numbers::pi * 0.04 * 1.6, 0.05);
+}
+
+}  // namespace
+}  // namespace genmod::models

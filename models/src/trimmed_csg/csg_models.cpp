@@ -27,6 +27,14 @@ ClosedSurface drill_cylinder(double radius) {
   return {cat({t * 3.0 - 1.5, cos(s * (2.0 * pi)) * radius, sin(s * (2.0 * pi)) * radius}), true, false};
 }
 
+ClosedSurface cross_cylinder(double radius, double z0) {
+  if (!(radius > 0)) throw std::invalid_argument("cross_cylinder: radius must be > 0");
+  constexpr double pi = std::numbers::pi;
+  const Fn s = x(0), t = x(1);
+  // Along y from -1.5 to 1.5 at height z0; S_s x S_t points away from the axis.
+  return {cat({sin(s * (2.0 * pi)) * radius, t * 3.0 - 1.5, cos(s * (2.0 * pi)) * radius + z0}), true, false};
+}
+
 ClosedSurface sphere_surface(double radius, double cx, double cy, double cz) {
   constexpr double pi = std::numbers::pi;
   const Fn u = x(0), v = x(1);
@@ -36,13 +44,16 @@ ClosedSurface sphere_surface(double radius, double cx, double cy, double cz) {
           true, false};
 }
 
-std::vector<std::string> csg_model_names() { return {"drilled_sphere"}; }
+std::vector<std::string> csg_model_names() { return {"drilled_sphere", "drilled_sphere_twice"}; }
 
-bool is_csg_model(const std::string& name) { return name == "drilled_sphere"; }
+bool is_csg_model(const std::string& name) { return name == "drilled_sphere" || name == "drilled_sphere_twice"; }
 
 TrimmedCsgResult mesh_csg_model(const std::string& name, const TrimmedCsgOptions& options) {
   if (name == "drilled_sphere") return trimmed_csg(bumpy_sphere(), drill_cylinder(0.3), CsgOperation::Difference, options);
-  throw std::invalid_argument("unknown CSG model '" + name + "' (known: drilled_sphere)");
+  if (name == "drilled_sphere_twice")
+    return trimmed_csg({bumpy_sphere(), drill_cylinder(0.3), cross_cylinder(0.2, 0.55)},
+                       [](const std::vector<char>& in) { return in[0] && !in[1] && !in[2]; }, options);
+  throw std::invalid_argument("unknown CSG model '" + name + "' (known: drilled_sphere, drilled_sphere_twice)");
 }
 
 }  // namespace genmod::models

@@ -109,15 +109,33 @@ struct Piece {
 };
 
 // Steps 5-7 for one surface: coords (c0, c1) of the chains are its parameters.
-Piece trim_piece(const ClosedSurface& surf, const ClosedSurface& other, int c0, int c1, const std::vector<Chain>& chains,
-                 const KdTree& curve_tree, bool keep_inside, bool flip, const TrimmedCsgOptions& options, Builder& b) {
+// One intersection curve of the surface with another: its chains, the coordinates of the
+// surface's parameters in them, and the 4-D kd-tree of its proximate boxes.
+struct CurveUse {
+  const std::vector<Chain>* chains;
+  int c0, c1;
+  const KdTree* tree;
+};
+
+Piece trim_piece(const std::vector<ClosedSurface>& all, std::size_t index, const std::vector<CurveUse>& uses,
+                 const CsgSolid& solid, const TrimmedCsgOptions& options, Builder& b) {
   Piece out;
+  const ClosedSurface& surf = all[index];
   Evaluator3 eval(surf.surface);
-  // Step 2: the projected intersection kd-tree; Step 6: merged with the sampling tree.
-  const std::size_t keep[2] = {static_cast<std::size_t>(c0), static_cast<std::size_t>(c1)};
-  KdTree merged = project(curve_tree, keep);
+  // Step 2: the projected intersection kd-trees; Step 6: merged with the sampling tree
+  // add-only, so that no intersection leaf is subdivided.
+  KdTree merged(KdBox{Interval(0, 1), Interval(0, 1)});
   std::vector<KdBox> curve_leaves;
-  for (KdTree::Index l : merged.leaves()) curve_leaves.push_back(merged.box(l));
+  for (const CurveUse& use : uses) {
+    const std::size_t keep[2] = {static_cast<std::size_t>(use.c0), static_cast<std::size_t>(use.c1)};
+    const KdTree projected = project(*use.tree, keep);
+    if (projected.empty()) continue;
+    for (KdTree::Index l : projected.leaves()) curve_leaves.push_back(projected.box(l));
+    if (merged.empty())
+      merged = projected;
+    else
+      merge_addonly(merged, projected);
+  }
   const KdTree samp = sampling_tree(surf.surface, options.tolerance, options.max_depth);
   if (merged.empty())
     merged = samp;
@@ -127,19 +145,22 @@ Piece trim_piece(const ClosedSurface& surf, const ClosedSurface& other, int c0, 
   // Constraint segments in this surface's parameters.
   struct Seg {
     const ChainVertex *a, *b;
+    double ax, ay, bx, by;
   };
   std::vector<Seg> segs;
   std::vector<double> lengths;
-  for (const Chain& ch : chains) {
-    const std::size_t n = ch.v.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const ChainVertex& a = ch.v[k];
-      const ChainVertex& q = ch.v[(k + 1) % n];
-      if (ch.jump[k] == c0 || ch.jump[k] == c1 || a.id == q.id) continue;
-      segs.push_back({&a, &q});
-      lengths.push_back(std::hypot(q.p[c1] - a.p[c1], q.p[c0] - a.p[c0]));
+  for (const CurveUse& use : uses)
+    for (const Chain& ch : *use.chains) {
+      const int c0 = use.c0, c1 = use.c1;
+      const std::size_t n = ch.v.size();
+      for (std::size_t k = 0; k < n; ++k) {
+        const ChainVertex& a = ch.v[k];
+        const ChainVertex& q = ch.v[(k + 1) % n];
+        if (ch.jump[k] == c0 || ch.jump[k] == c1 || a.id == q.id) continue;
+        segs.push_back({&a, &q, a.p[c0], a.p[c1], q.p[c0], q.p[c1]});
+        lengths.push_back(std::hypot(q.p[c1] - a.p[c1], q.p[c0] - a.p[c0]));
+      }
     }
-  }
   double clear = 0.0;
   if (!lengths.empty()) {
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
@@ -148,7 +169,7 @@ Piece trim_piece(const ClosedSurface& surf, const ClosedSurface& other, int c0, 
   const double clear2 = clear * clear;
   auto clear_of_curve = [&](double x, double y) {
     for (const Seg& s : segs)
-      if (seg_dist2(x, y, s.a->p[c0], s.a->p[c1], s.b->p[c0], s.b->p[c1]) < clear2) return false;
+      if (seg_dist2(x, y, s.ax, s.ay, s.bx, s.by) < clear2) return false;
     return true;
   };
   auto inside_curve_leaf = [&](double x, double y) {
@@ -232,12 +253,13 @@ Piece trim_piece(const ClosedSurface& surf, const ClosedSurface& other, int c0, 
   // The curve's vertices first: a sample at the same parameters is the curve's vertex.
   CDT cdt;
   std::map<const ChainVertex*, CDT::Vertex_handle> handles;
-  for (const Chain& ch : chains)
-    for (const ChainVertex& cv : ch.v) {
-      auto vh = cdt.insert(P2(cv.p[c0], cv.p[c1]));
-      if (vh->info().id < 0) vh->info().id = cv.id;
-      handles[&cv] = vh;
-    }
+  for (const CurveUse& use : uses)
+    for (const Chain& ch : *use.chains)
+      for (const ChainVertex& cv : ch.v) {
+        auto vh = cdt.insert(P2(cv.p[use.c0], cv.p[use.c1]));
+        if (vh->info().id < 0) vh->info().id = cv.id;
+        handles[&cv] = vh;
+      }
   for (auto [x, y] : kept) {
     auto vh = cdt.insert(P2(x, y));
     if (vh->info().id < 0) vh->info().id = ids.at(canon(x, y));
@@ -273,24 +295,38 @@ Piece trim_piece(const ClosedSurface& surf, const ClosedSurface& other, int c0, 
       }
     }
   }
-  std::vector<char> keep_region(regions, 0);
+  // A region is on the result's boundary when the solid differs on the two sides of the
+  // surface there (the other surfaces' insides fixed by one classification each); the result
+  // lies on the surface's outer side when it holds only with the surface's inside false.
+  std::vector<char> keep_region(regions, 0), flip_region(regions, 0);
   for (int r = 0; r < regions; ++r) {
     const CDT::Face_handle f = best[r];
     const P2 c = CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
     const std::array<double, 3> p = eval.at(c.x(), c.y());
-    const Classification cl = classify_point(other.surface, p);
-    ++out.classifications;
-    if (cl.where != PointClass::Inside && cl.where != PointClass::Outside) {
-      ++out.unknown;
-      throw std::runtime_error("trimmed_csg: a region's point could not be classified");
+    std::vector<char> inside(all.size(), 0);
+    for (std::size_t j = 0; j < all.size(); ++j) {
+      if (j == index) continue;
+      const Classification cl = classify_point(all[j].surface, p);
+      ++out.classifications;
+      if (cl.where != PointClass::Inside && cl.where != PointClass::Outside) {
+        ++out.unknown;
+        throw std::runtime_error("trimmed_csg: a region's point could not be classified");
+      }
+      inside[j] = cl.where == PointClass::Inside;
     }
-    keep_region[r] = (cl.where == PointClass::Inside) == keep_inside;
+    inside[index] = 1;
+    const bool with = solid(inside);
+    inside[index] = 0;
+    const bool without = solid(inside);
+    keep_region[r] = with != without;
+    flip_region[r] = without;
     if (std::getenv("GENMOD_CSG_DEBUG"))
-      std::fprintf(stderr, "piece %d region %d at (%g %g) -> (%g %g %g) %s keep %d\n", c0, r, c.x(), c.y(), p[0], p[1],
-                   p[2], cl.where == PointClass::Inside ? "inside" : "outside", int(keep_region[r]));
+      std::fprintf(stderr, "surface %zu region %d at (%g %g) -> (%g %g %g) keep %d flip %d\n", index, r, c.x(), c.y(),
+                   p[0], p[1], p[2], int(keep_region[r]), int(flip_region[r]));
   }
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     if (!keep_region[f->info().region]) continue;
+    const bool flip = flip_region[f->info().region];
     std::array<std::uint32_t, 3> t{final_id(f->vertex(0)->info().id), final_id(f->vertex(1)->info().id),
                                    final_id(f->vertex(2)->info().id)};
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) continue;
@@ -302,10 +338,19 @@ Piece trim_piece(const ClosedSurface& surf, const ClosedSurface& other, int c0, 
 
 }  // namespace
 
-TrimmedCsgResult trimmed_csg(const ClosedSurface& first, const ClosedSurface& second, CsgOperation op,
-                             const TrimmedCsgOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  TrimmedCsgResult result;
+namespace {
+
+// Steps 1-3 for one pair of surfaces.
+struct PairCurve {
+  std::vector<Chain> chains;
+  KdTree tree{KdBox(4, Interval(0, 1))};
+  std::size_t components = 0;
+  bool complete = false;
+};
+
+PairCurve pair_curve(const ClosedSurface& first, const ClosedSurface& second, const TrimmedCsgOptions& options,
+                     Builder& b, std::set<std::uint32_t>& seam) {
+  PairCurve out;
   // Step 1: the intersection curve in (u, v, s, t).
   ImplicitCurveOptions co;
   co.acceptance_width = options.curve_width;
@@ -315,21 +360,18 @@ TrimmedCsgResult trimmed_csg(const ClosedSurface& first, const ClosedSurface& se
   if (second.periodic_v) co.periodic.push_back(3);
   co.limits.time_limit = options.curve_time;
   const SurfaceIntersection si = surface_intersection(first.surface, second.surface, {}, {}, co);
-  result.curve_complete = si.complete();
-  if (!result.curve_complete) throw std::runtime_error("trimmed_csg: the intersection curve is incomplete");
-  result.curve_components = si.curve.components.size();
+  out.complete = si.complete();
+  if (!out.complete) throw std::runtime_error("trimmed_csg: the intersection curve is incomplete");
+  out.components = si.curve.components.size();
 
   // Step 2: the 4-D kd-tree of the proximate boxes.
   const KdBox domain4(4, Interval(0, 1));
-  KdTree tree4(domain4);
   for (const CurveBox& cb : si.curve.boxes)
-    if (cb.status == CurveBoxStatus::Proximate) tree4.insert_addonly(box_address(domain4, cb.box));
+    if (cb.status == CurveBoxStatus::Proximate) out.tree.insert_addonly(box_address(domain4, cb.box));
 
   // Step 3: chains with periodic crossings made explicit (one vertex on both sides of the cut).
-  Builder b;
   Evaluator3 eval_first(first.surface);
-  std::vector<Chain> chains;
-  std::set<std::uint32_t> seam;
+  std::vector<Chain>& chains = out.chains;
   for (const Polyline& pl : si.curve.components) {
     if (!pl.closed) throw std::runtime_error("trimmed_csg: an intersection curve is not closed");
     const std::size_t n = pl.points.size();
@@ -404,19 +446,47 @@ TrimmedCsgResult trimmed_csg(const ClosedSurface& first, const ClosedSurface& se
     chains.push_back(std::move(ch));
   }
 
-  const bool diff = op == CsgOperation::Difference;
-  const bool inter = op == CsgOperation::Intersection;
-  const Piece pa = trim_piece(first, second, 0, 1, chains, tree4, inter, false, options, b);
-  const Piece pb = trim_piece(second, first, 2, 3, chains, tree4, inter || diff, diff, options, b);
-  result.classifications = pa.classifications + pb.classifications;
-  result.triangles_first = pa.triangles.size();
-  result.triangles_second = pb.triangles.size();
+  return out;
+}
+
+}  // namespace
+
+TrimmedCsgResult trimmed_csg(const std::vector<ClosedSurface>& surfaces, const CsgSolid& solid,
+                             const TrimmedCsgOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (surfaces.size() < 2) throw std::invalid_argument("trimmed_csg: needs at least two surfaces");
+  TrimmedCsgResult result;
+  Builder b;
+  std::set<std::uint32_t> seam;
+  // C(n, 2) runs of Steps 1-3 (the curves of different pairs must not meet).
+  std::vector<PairCurve> curves;
+  std::vector<std::vector<CurveUse>> uses(surfaces.size());
+  curves.reserve(surfaces.size() * (surfaces.size() - 1) / 2);
+  result.curve_complete = true;
+  for (std::size_t i = 0; i < surfaces.size(); ++i)
+    for (std::size_t j = i + 1; j < surfaces.size(); ++j) {
+      curves.push_back(pair_curve(surfaces[i], surfaces[j], options, b, seam));
+      const PairCurve& c = curves.back();
+      result.curve_components += c.components;
+      result.curve_complete = result.curve_complete && c.complete;
+      uses[i].push_back({&c.chains, 0, 1, &c.tree});
+      uses[j].push_back({&c.chains, 2, 3, &c.tree});
+    }
+  std::vector<Piece> pieces;
+  for (std::size_t k = 0; k < surfaces.size(); ++k) {
+    pieces.push_back(trim_piece(surfaces, k, uses[k], solid, options, b));
+    result.classifications += pieces.back().classifications;
+    result.triangles_per_surface.push_back(pieces.back().triangles.size());
+  }
+  result.triangles_first = result.triangles_per_surface[0];
+  result.triangles_second = result.triangles_per_surface[1];
 
   // Compact to the used vertices.
   std::vector<long> remap(b.verts.size(), -1);
-  std::vector<char> in_a(b.verts.size(), 0), in_b(b.verts.size(), 0);
-  auto use = [&](const std::vector<std::array<std::uint32_t, 3>>& tris, std::vector<char>& mark) {
-    for (const auto& t : tris)
+  std::vector<int> users(b.verts.size(), 0);
+  for (const Piece& piece : pieces) {
+    std::vector<char> mark(b.verts.size(), 0);
+    for (const auto& t : piece.triangles)
       for (std::uint32_t v : t) {
         mark[v] = 1;
         if (remap[v] < 0) {
@@ -424,19 +494,29 @@ TrimmedCsgResult trimmed_csg(const ClosedSurface& first, const ClosedSurface& se
           result.mesh.vertices.push_back(b.verts[v]);
         }
       }
-    for (const auto& t : tris)
+    for (std::size_t v = 0; v < mark.size(); ++v) users[v] += mark[v];
+    for (const auto& t : piece.triangles)
       result.mesh.triangles.push_back({static_cast<std::uint32_t>(remap[t[0]]), static_cast<std::uint32_t>(remap[t[1]]),
                                        static_cast<std::uint32_t>(remap[t[2]])});
-  };
-  use(pa.triangles, in_a);
-  use(pb.triangles, in_b);
+  }
   for (std::uint32_t v : seam)
     if (remap[v] >= 0) {
       result.seam.push_back(static_cast<std::uint32_t>(remap[v]));
-      if (in_a[v] && in_b[v]) ++result.seam_vertices_in_both;
+      if (users[v] >= 2) ++result.seam_vertices_in_both;
     }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+TrimmedCsgResult trimmed_csg(const ClosedSurface& first, const ClosedSurface& second, CsgOperation op,
+                             const TrimmedCsgOptions& options) {
+  CsgSolid solid;
+  switch (op) {
+    case CsgOperation::Union: solid = [](const std::vector<char>& in) { return in[0] || in[1]; }; break;
+    case CsgOperation::Intersection: solid = [](const std::vector<char>& in) { return in[0] && in[1]; }; break;
+    case CsgOperation::Difference: solid = [](const std::vector<char>& in) { return in[0] && !in[1]; }; break;
+  }
+  return trimmed_csg(std::vector<ClosedSurface>{first, second}, solid, options);
 }
 
 }  // namespace genmod::models

@@ -32,6 +32,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,11 +56,12 @@ struct TrimmedCsgOptions {
 struct TrimmedCsgResult {
   Mesh mesh;                                // both trimmed pieces, welded
   std::vector<std::uint32_t> seam;          // mesh vertices on the intersection curve
-  std::size_t triangles_first = 0, triangles_second = 0;
+  std::size_t triangles_first = 0, triangles_second = 0;  // the mesh's triangles: first's, then second's, ...
+  std::vector<std::size_t> triangles_per_surface;
   std::size_t curve_components = 0;
   bool curve_complete = false;              // Algorithm 5.3 reported no limit / unresolved box
   std::size_t classifications = 0, unknown_classifications = 0;
-  // Seam check: every seam vertex is used by triangles of both pieces.
+  // Seam check: the seam vertices used by triangles of two (or more) pieces.
   std::size_t seam_vertices_in_both = 0;
   double seconds = 0.0;
 };
@@ -68,14 +70,29 @@ struct TrimmedCsgResult {
 TrimmedCsgResult trimmed_csg(const ClosedSurface& first, const ClosedSurface& second, CsgOperation op,
                              const TrimmedCsgOptions& options = {});
 
+// Full CSG (§5.2.5, snyder.md §5.5) of n closed surfaces: the solid is a Boolean function of
+// "inside surface i" (in[i] != 0), e.g. (A - B) - C: in[0] && !in[1] && !in[2]. Steps 1-3 run
+// for each of the C(n, 2) pairs; each surface is then trimmed by all its curves at once (the
+// CPG of its trimmed regions is the labelling of the regions between all its curves), a region
+// kept where the solid differs on its two sides and oriented towards the solid's outside.
+// Assumes that the curves of different pairs do not meet (no triple points); a meeting is
+// reported as a runtime_error.
+using CsgSolid = std::function<bool(const std::vector<char>& inside)>;
+TrimmedCsgResult trimmed_csg(const std::vector<ClosedSurface>& surfaces, const CsgSolid& solid,
+                             const TrimmedCsgOptions& options = {});
+
 // The thesis's hole-drilling surfaces (§5.4.1, Fig 5.20): the bumpy sphere (profile product,
 // periodic in u) and the cylinder along x, x in [-1.5, 1.5], radius `radius` (periodic in s,
 // open at its ends, which lie outside the sphere).
 ClosedSurface bumpy_sphere();
 ClosedSurface drill_cylinder(double radius = 0.3);
+// A cylinder along y, y in [-1.5, 1.5], axis at x = 0, z = z0 (periodic in s, open ends).
+ClosedSurface cross_cylinder(double radius = 0.2, double z0 = 0.55);
 ClosedSurface sphere_surface(double radius, double cx, double cy, double cz);
 
-// Named CSG models for `genmod mesh`: "drilled_sphere" (bumpy sphere minus cylinder).
+// Named CSG models for `genmod mesh`: "drilled_sphere" (bumpy sphere minus cylinder) and
+// "drilled_sphere_twice" ((A - B) - C, §5.5: the drilled sphere minus a second, thinner
+// cylinder along y above the first, the two bores not meeting: genus 2).
 std::vector<std::string> csg_model_names();
 bool is_csg_model(const std::string& name);
 TrimmedCsgResult mesh_csg_model(const std::string& name, const TrimmedCsgOptions& options = {});
