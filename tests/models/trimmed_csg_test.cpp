@@ -29,6 +29,8 @@ TEST(TrimmedCsg, DrilledSphereIsValidGenusOne) {
   EXPECT_EQ(v.coincident_vertices, 0u);
   EXPECT_GT(r.triangles_first, 0u);
   EXPECT_GT(r.triangles_second, 0u);
+  // Every sampling leaf met the box-size criterion (none stopped at max_depth).
+  EXPECT_EQ(r.capped_leaves, 0u);
   // Smaller than the bumpy sphere's volume bound and larger than the sphere minus the
   // cylinder's bounding box would leave.
   EXPECT_GT(v.volume, 3.0);

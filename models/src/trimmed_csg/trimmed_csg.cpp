@@ -74,7 +74,7 @@ double seg_dist2(double px, double py, double ax, double ay, double bx, double b
 
 // The adaptive sampling kd-tree (Step 5): a leaf is accepted when the interval box of the
 // surface over it is at most `tol` wide in every coordinate, or at max_depth.
-KdTree sampling_tree(const Fn& surface, double tol, int max_depth) {
+KdTree sampling_tree(const Fn& surface, double tol, int max_depth, std::size_t& capped) {
   const KdBox domain{Interval(0, 1), Interval(0, 1)};
   KdTree tree = KdTree::full(domain);
   const Tape tape(surface, std::vector<int>{0, 1});
@@ -87,7 +87,11 @@ KdTree sampling_tree(const Fn& surface, double tol, int max_depth) {
     auto y = iev.eval(tape, std::span<const Interval>(box));
     double w = 0.0;
     for (std::size_t j = 0; j < 3; ++j) w = std::max(w, std::isfinite(y[j].width()) ? y[j].width() : 1e300);
-    if (w <= tol || depth >= max_depth) continue;
+    if (w <= tol) continue;
+    if (depth >= max_depth) {
+      ++capped;
+      continue;
+    }
     const auto kids = tree.split(leaf, static_cast<std::size_t>(depth % 2));
     stack.push_back({kids[0], depth + 1});
     stack.push_back({kids[1], depth + 1});
@@ -105,7 +109,7 @@ struct Builder {
 
 struct Piece {
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  std::size_t classifications = 0, unknown = 0;
+  std::size_t classifications = 0, unknown = 0, capped = 0;
 };
 
 // Steps 5-7 for one surface: coords (c0, c1) of the chains are its parameters.
@@ -136,7 +140,7 @@ Piece trim_piece(const std::vector<ClosedSurface>& all, std::size_t index, const
     else
       merge_addonly(merged, projected);
   }
-  const KdTree samp = sampling_tree(surf.surface, options.tolerance, options.max_depth);
+  const KdTree samp = sampling_tree(surf.surface, options.tolerance, options.max_depth, out.capped);
   if (merged.empty())
     merged = samp;
   else
@@ -476,6 +480,7 @@ TrimmedCsgResult trimmed_csg(const std::vector<ClosedSurface>& surfaces, const C
   for (std::size_t k = 0; k < surfaces.size(); ++k) {
     pieces.push_back(trim_piece(surfaces, k, uses[k], solid, options, b));
     result.classifications += pieces.back().classifications;
+    result.capped_leaves += pieces.back().capped;
     result.triangles_per_surface.push_back(pieces.back().triangles.size());
   }
   result.triangles_first = result.triangles_per_surface[0];

@@ -47,8 +47,8 @@ struct ClosedSurface {
 };
 
 struct TrimmedCsgOptions {
-  double tolerance = 0.02;       // sampling: a leaf's interval box of S is at most this wide
-  int max_depth = 14;            // sampling: bisections per path at most
+  double tolerance = 0.05;       // sampling: a leaf's interval box of S is at most this wide
+  int max_depth = 16;            // sampling: bisections per path at most
   double curve_width = 0.02;     // Algorithm 5.3 acceptance width in (u,v,s,t)
   double curve_time = 60.0;      // seconds for the intersection curve at most
 };
@@ -61,6 +61,10 @@ struct TrimmedCsgResult {
   std::size_t curve_components = 0;
   bool curve_complete = false;              // Algorithm 5.3 reported no limit / unresolved box
   std::size_t classifications = 0, unknown_classifications = 0;
+  // Sampling leaves accepted at max_depth with their interval box still wider than the
+  // tolerance (the criterion is the thesis's box-size one; interval overestimation of a bumpy
+  // surface makes it stricter than the true width).
+  std::size_t capped_leaves = 0;
   // Seam check: the seam vertices used by triangles of two (or more) pieces.
   std::size_t seam_vertices_in_both = 0;
   double seconds = 0.0;
