@@ -31,6 +31,8 @@ TEST(TrimmedCsg, DrilledSphereIsValidGenusOne) {
   EXPECT_GT(r.triangles_second, 0u);
   // Every sampling leaf met the box-size criterion (none stopped at max_depth).
   EXPECT_EQ(r.capped_leaves, 0u);
+  // No intersection leaf was subdivided by the merge with the sampling trees.
+  EXPECT_EQ(r.samples_inside_curve_leaves, 0u);
   // Smaller than the bumpy sphere's volume bound and larger than the sphere minus the
   // cylinder's bounding box would leave.
   EXPECT_GT(v.volume, 3.0);
@@ -86,6 +88,20 @@ TEST(TrimmedCsg, UnionAndIntersectionOfSpheres) {
   const double lens = 5.0 * std::numbers::pi / 12.0;
   const double both = 8.0 * std::numbers::pi / 3.0 - lens;
   const TrimmedCsgResult i = trimmed_csg(a, b, CsgOperation::Intersection);
+  // Vertices on the spheres: samples exactly (to rounding), seam vertices on both.
+  auto off = [](const std::array<double, 3>& p, double cx) { return std::abs(std::hypot(p[0] - cx, p[1], p[2]) - 1.0); };
+  for (const auto& p : i.mesh.vertices) EXPECT_LT(std::min(off(p, 0.0), off(p, 1.0)), 1e-12);
+  for (std::uint32_t k : i.seam) EXPECT_LT(std::max(off(i.mesh.vertices[k], 0.0), off(i.mesh.vertices[k], 1.0)), 1e-6);
+  // Triangle centroids within the sampling's chord error of a sphere.
+  double worst = 0.0;
+  for (const auto& t : i.mesh.triangles) {
+    std::array<double, 3> c{};
+    for (std::uint32_t k : t)
+      for (int j = 0; j < 3; ++j) c[j] += i.mesh.vertices[k][j] / 3.0;
+    worst = std::max(worst, std::min(off(c, 0.0), off(c, 1.0)));
+  }
+  EXPECT_LT(worst, 0.01);
+  EXPECT_EQ(i.samples_inside_curve_leaves, 0u);
   const MeshValidity vi = validate(i.mesh);
   EXPECT_TRUE(vi.valid()) << describe(vi);
   EXPECT_EQ(vi.euler_characteristic, 2);

@@ -109,7 +109,7 @@ struct Builder {
 
 struct Piece {
   std::vector<std::array<std::uint32_t, 3>> triangles;
-  std::size_t classifications = 0, unknown = 0, capped = 0;
+  std::size_t classifications = 0, unknown = 0, capped = 0, inside_curve_leaves = 0;
 };
 
 // Steps 5-7 for one surface: coords (c0, c1) of the chains are its parameters.
@@ -192,6 +192,9 @@ Piece trim_piece(const std::vector<ClosedSurface>& all, std::size_t index, const
   }
   std::set<std::pair<double, double>> kept;
   auto is_corner = [](double x, double y) { return (x == 0 || x == 1) && (y == 0 || y == 1); };
+  // Step 6's invariant: no leaf corner lies strictly inside an intersection leaf.
+  for (auto [x, y] : pts)
+    if (inside_curve_leaf(x, y)) ++out.inside_curve_leaves;
   for (auto [x, y] : pts) {
     if (is_corner(x, y)) {
       kept.insert({x, y});
@@ -481,6 +484,7 @@ TrimmedCsgResult trimmed_csg(const std::vector<ClosedSurface>& surfaces, const C
     pieces.push_back(trim_piece(surfaces, k, uses[k], solid, options, b));
     result.classifications += pieces.back().classifications;
     result.capped_leaves += pieces.back().capped;
+    result.samples_inside_curve_leaves += pieces.back().inside_curve_leaves;
     result.triangles_per_surface.push_back(pieces.back().triangles.size());
   }
   result.triangles_first = result.triangles_per_surface[0];

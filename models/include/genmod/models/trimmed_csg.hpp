@@ -65,6 +65,9 @@ struct TrimmedCsgResult {
   // tolerance (the criterion is the thesis's box-size one; interval overestimation of a bumpy
   // surface makes it stricter than the true width).
   std::size_t capped_leaves = 0;
+  // Leaf corners of the merged kd-trees strictly inside a projected intersection leaf: 0 when
+  // merge_addonly kept every intersection leaf whole (Step 6's invariant).
+  std::size_t samples_inside_curve_leaves = 0;
   // Seam check: the seam vertices used by triangles of two (or more) pieces.
   std::size_t seam_vertices_in_both = 0;
   double seconds = 0.0;
