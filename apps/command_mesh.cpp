@@ -7,6 +7,7 @@
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
 #include "genmod/models/procedural_models.hpp"
+#include "genmod/models/trimmed_csg.hpp"
 #include "genmod/tessellate/mesh_io.hpp"
 #include "genmod/tessellate/validate.hpp"
 
@@ -45,6 +46,8 @@ int run_mesh(std::span<const std::string> args) {
       return run_mesh_implicit(args);
   for (const std::string& arg : args)
     if (models::find_procedural_model(arg)) return run_mesh_procedural(args);
+  for (const std::string& arg : args)
+    if (models::is_csg_model(arg)) return run_mesh_csg(args);
   // --param repeats for different parameters: take every occurrence out before the generic
   // scanner sees the rest. The same parameter twice is a mistake, not "last one wins".
   models::ParameterValues overrides;

@@ -35,6 +35,8 @@ extern const Command kBatchCommand;
 int run_mesh_implicit(std::span<const std::string> args);
 // genmod mesh NAME ...: the procedural path of the mesh command (procedural_models.hpp).
 int run_mesh_procedural(std::span<const std::string> args);
+// genmod mesh NAME ...: the CSG models of trimmed surfaces (trimmed_csg.hpp).
+int run_mesh_csg(std::span<const std::string> args);
 // genmod render MODEL --3d ...: the shaded 3-D path of the render command.
 int run_render_shaded(std::span<const std::string> args);
 
