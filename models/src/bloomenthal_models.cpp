@@ -55,24 +55,35 @@ void check_positive(double v, const char* what) {
 
 }  // namespace
 
-std::vector<FieldElement> convolution_elements(const std::vector<ConvolutionSegment>& segments) {
+namespace {
+Fn convolve(const ConvolutionSegment& s, Kernel kernel) {
+  return kernel == Kernel::gaussian ? segment_convolution(s.a, s.b, s.r1, s.r2) : segment_convolution(s.a, s.b, s.r1, s.r2, kernel);
+}
+}  // namespace
+
+std::vector<FieldElement> convolution_elements(const std::vector<ConvolutionSegment>& segments, Kernel kernel) {
   std::vector<FieldElement> es;
   es.reserve(segments.size());
-  for (const ConvolutionSegment& s : segments)
-    es.push_back({segment_convolution(s.a, s.b, s.r1, s.r2), s.a, s.b, 1.0, std::max(s.r1, s.r2), Falloff::gaussian});
+  for (const ConvolutionSegment& s : segments) {
+    const double r = std::max(s.r1, s.r2);
+    if (kernel == Kernel::gaussian)
+      es.push_back({convolve(s, kernel), s.a, s.b, 1.0, r, Falloff::gaussian});
+    else
+      es.push_back({convolve(s, kernel), s.a, s.b, 1.0, std::sqrt(2.0) * kernel_support(kernel) * r, Falloff::compact});
+  }
   return es;
 }
 
-Fn culled_convolution(const std::vector<ConvolutionSegment>& segments) {
-  return culled_field(convolution_elements(segments));
+Fn culled_convolution(const std::vector<ConvolutionSegment>& segments, Kernel kernel) {
+  return culled_field(convolution_elements(segments, kernel));
 }
 
-Fn summed_convolution(const std::vector<ConvolutionSegment>& segments) {
+Fn summed_convolution(const std::vector<ConvolutionSegment>& segments, Kernel kernel) {
   if (segments.empty()) throw std::invalid_argument("summed_convolution: no segments");
   // A balanced sum keeps the expression shallow for thousands of terms.
   std::vector<Fn> terms;
   terms.reserve(segments.size());
-  for (const ConvolutionSegment& s : segments) terms.push_back(segment_convolution(s.a, s.b, s.r1, s.r2));
+  for (const ConvolutionSegment& s : segments) terms.push_back(convolve(s, kernel));
   while (terms.size() > 1) {
     std::vector<Fn> next;
     next.reserve((terms.size() + 1) / 2);

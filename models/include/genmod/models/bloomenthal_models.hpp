@@ -13,6 +13,7 @@
 #pragma once
 
 #include "genmod/kernel/fn.hpp"
+#include "genmod/operators/convolution.hpp"
 #include "genmod/operators/culled_field.hpp"
 #include "genmod/operators/skeletal.hpp"
 
@@ -27,12 +28,17 @@ struct ConvolutionSegment {
   Point3 a, b;
   double r1, r2;
 };
-// One culled_field element per segment (Falloff::gaussian, radius max(r1, r2), weight 1).
-std::vector<FieldElement> convolution_elements(const std::vector<ConvolutionSegment>& segments);
+// One culled_field element per segment. Gaussian kernel: Falloff::gaussian, radius max(r1,
+// r2), weight 1 (the culled field's derivatives are then never culled: the gradient and
+// Hessian tapes the mesher uses pay every segment). B-spline or Wyvill kernel: Falloff::compact
+// with the support sqrt(2) kernel_support(kernel) max(r1, r2) (convolution.hpp), so the
+// derivatives are culled as the values are.
+std::vector<FieldElement> convolution_elements(const std::vector<ConvolutionSegment>& segments,
+                                               Kernel kernel = Kernel::gaussian);
 // The culled sum of the segments' convolutions (a density).
-Fn culled_convolution(const std::vector<ConvolutionSegment>& segments);
+Fn culled_convolution(const std::vector<ConvolutionSegment>& segments, Kernel kernel = Kernel::gaussian);
 // The plain sum of the same convolutions (no culling; the benchmark's baseline).
-Fn summed_convolution(const std::vector<ConvolutionSegment>& segments);
+Fn summed_convolution(const std::vector<ConvolutionSegment>& segments, Kernel kernel = Kernel::gaussian);
 
 // ---- §7.5 demos ------------------------------------------------------------------------
 
