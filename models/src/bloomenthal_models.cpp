@@ -306,3 +306,40 @@ SegmentBounds segment_bounds(const std::vector<ConvolutionSegment>& segments, do
 }
 
 }  // namespace genmod::models
+
+namespace genmod::models {
+
+MapleLeaf maple_leaf(double vein_radius) {
+  check_positive(vein_radius, "maple leaf vein_radius");
+  if (vein_radius > 0.1) throw std::invalid_argument("maple leaf vein_radius must be <= 0.1");
+  MapleLeaf leaf;
+  const double angles[5] = {-70, -35, 0, 35, 70}, lengths[5] = {0.7, 0.9, 1.0, 0.9, 0.7};
+  const Fn X = x(0), Y = x(1), Z = x(2);
+  Fn outline;
+  leaf.veins.push_back({{0, -0.3, 0}, {0, 0, 0}, vein_radius, vein_radius});
+  for (int i = 0; i < 5; ++i) {
+    const double a = rad(angles[i]), L = lengths[i];
+    const V d{std::sin(a), std::cos(a), 0};
+    leaf.veins.push_back({{0, 0, 0}, mul(L, d), vein_radius, 0.5 * vein_radius});
+    // The lobe: (u / (0.55 L))^2 + (v / (0.3 L))^2 - 1 about the centre 0.55 L d, u along d.
+    const V c = mul(0.55 * L, d);
+    const Fn u = (X - c[0]) * d[0] + (Y - c[1]) * d[1], v = (Y - c[1]) * d[0] - (X - c[0]) * d[1];
+    const Fn lobe = square(u / (0.55 * L)) + square(v / (0.3 * L)) - 1.0;
+    outline = i == 0 ? lobe : min(outline, lobe);
+  }
+  leaf.vein_density = summed_convolution(leaf.veins);
+  leaf.blade_inside = -outline;
+  const Fn az = abs(Z);
+  // Arg max: the vein (scaled by 100 so it wins wherever r (sum D - 0.02) exceeds |z| by 1%),
+  // beyond (outside the outline), above and below (inside it). The floor 0.02 (sum D below
+  // it: farther than about 2.4 r from a vein) removes the film of "vein" thinner than a cube
+  // that the source's rule r sum D > |z| leaves along the whole blade (there it is lost as
+  // looped intersections, or caught by a sample exactly on the blade).
+  leaf.regions = {-leaf.blade_inside, 100.0 * (vein_radius * (leaf.vein_density - 0.02) - az), min(Z, leaf.blade_inside),
+                  min(-Z, leaf.blade_inside)};
+  return leaf;
+}
+
+std::vector<std::pair<int, int>> maple_leaf_interest() { return {{1, 2}, {1, 3}, {2, 3}, {0, 1}}; }
+
+}  // namespace genmod::models

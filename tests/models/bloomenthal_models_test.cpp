@@ -3,20 +3,26 @@
 // that concern them (research/bloomenthal.md): 6 (superposition: the straight pair is one
 // segment), 22 (points converge to segments), 25 (the convolved pair has no crease), 40
 // (culling is sound), 41 (the ramiform has no gap at the junction), and the rotated pair's
-// "no bulge" (the height above the joint is r at every angle, Fig. 5.46).
+// "no bulge" (the height above the joint is r at every angle, Fig. 5.46); the maple leaf
+// (§7.4, reconstructed) by polygonize_regions, non-manifold only where blade and vein meet.
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
 #include "genmod/models/bloomenthal_models.hpp"
 #include "genmod/models/implicit_gallery.hpp"
 #include "genmod/operators/convolution.hpp"
+#include "genmod/tessellate/mesh_io.hpp"
+#include "genmod/tessellate/nonmanifold_polygonizer.hpp"
 #include "genmod/tessellate/validate.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <map>
 #include <random>
+#include <set>
 
 namespace genmod::models {
 namespace {
@@ -174,6 +180,61 @@ TEST(BloomenthalModels, HandUsesTheFingerTable) {
   const double reach = 0.9 + 0.7 + 0.25 - 0.6 * 0.0875;
   EXPECT_NEAR(tip.b[1], 1.75 + reach * std::cos(15 * M_PI / 180), 1e-12);
   EXPECT_NEAR(tip.b[2], -reach * std::sin(15 * M_PI / 180), 1e-12);
+}
+
+// The maple leaf (§7.4, reconstructed) by polygonize_regions: the blade is an open sheet
+// between above and below whose free borders lie on the margin, and an edge is shared by more
+// than two triangles only where the blade meets a vein (the (1,2), (1,3) and (2,3) sheets).
+TEST(BloomenthalModels, MapleLeafIsNonManifoldOnlyWhereBladeMeetsVein) {
+  const MapleLeaf leaf = maple_leaf();
+  NonmanifoldSettings s;
+  s.cube_size = 0.02;
+  s.bounds = {Interval(-1.0, 1.0), Interval(-0.4, 1.1), Interval(-0.1037, 0.0963)};  // no lattice corner on the blade
+  s.interest = maple_leaf_interest();
+  const RegionMesh m = polygonize_regions(leaf.regions, s);
+  ASSERT_GT(m.mesh.triangles.size(), 1000u);
+  std::map<std::pair<int, int>, std::vector<std::size_t>> edges;
+  for (std::size_t t = 0; t < m.mesh.triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      int a = static_cast<int>(m.mesh.triangles[t][k]), b = static_cast<int>(m.mesh.triangles[t][(k + 1) % 3]);
+      edges[{std::min(a, b), std::max(a, b)}].push_back(t);
+    }
+  std::size_t nonmanifold = 0, blade_border = 0, border_on_margin = 0, at_margin = 0;
+  std::size_t pairs_seen[4] = {0, 0, 0, 0};
+  for (const auto& [e, ts] : edges) {
+    if (ts.size() > 2) {
+      ++nonmanifold;
+      std::set<std::pair<int, int>> kinds;
+      for (std::size_t t : ts) kinds.insert(m.regions[t]);
+      const auto& p = m.mesh.vertices[e.first];
+      const std::vector<double> q{p[0], p[1], p[2]};
+      const bool junction = kinds.count({1, 2}) && kinds.count({1, 3}) && kinds.count({2, 3});
+      // Where a vein crosses the margin, the vein/beyond sheet meets the vein's sheets too.
+      const bool margin = kinds.count({0, 1}) && std::abs(evaluate(leaf.blade_inside, q)[0]) < 0.05;
+      if (!junction && margin) ++at_margin;
+      EXPECT_TRUE(junction || margin) << "a non-manifold edge away from a blade-vein junction at " << p[0] << " " << p[1]
+                                      << " " << p[2] << ", " << kinds.size() << " kinds";
+    }
+    if (ts.size() == 1 && m.regions[ts[0]] == std::pair<int, int>{2, 3}) {
+      ++blade_border;
+      const auto& p = m.mesh.vertices[e.first];
+      const std::vector<double> q{p[0], p[1], p[2]};
+      if (std::abs(evaluate(leaf.blade_inside, q)[0]) < 0.15) ++border_on_margin;
+    }
+  }
+  for (std::size_t t = 0; t < m.regions.size(); ++t) {
+    const auto r = m.regions[t];
+    pairs_seen[r == std::pair<int, int>{1, 2} ? 0 : r == std::pair<int, int>{1, 3} ? 1 : r == std::pair<int, int>{2, 3} ? 2 : 3]++;
+  }
+  std::printf("maple leaf: %zu triangles (vein/above %zu, vein/below %zu, blade %zu, vein/beyond %zu), %zu non-manifold edges (%zu where a vein crosses the margin), "
+              "%zu blade border edges, %zu of them at the margin\n",
+              m.mesh.triangles.size(), pairs_seen[0], pairs_seen[1], pairs_seen[2], pairs_seen[3], nonmanifold, at_margin, blade_border,
+              border_on_margin);
+  EXPECT_GT(nonmanifold, 20u);
+  EXPECT_GT(pairs_seen[2], 500u);
+  EXPECT_GT(blade_border, 50u);
+  EXPECT_GE(border_on_margin, blade_border * 9 / 10);
+  if (const char* dir = std::getenv("GENMOD_PREVIEW_DIR")) write_mesh(m.mesh, std::string(dir) + "/maple_leaf.ply");
 }
 
 TEST(BloomenthalModels, ParametersAreChecked) {

@@ -105,3 +105,28 @@ struct SegmentBounds {
 SegmentBounds segment_bounds(const std::vector<ConvolutionSegment>& segments, double margin);
 
 }  // namespace genmod::models
+
+namespace genmod::models {
+
+// The maple leaf (§7.4) [a reconstruction: the specimen's 117 points are not given]: five
+// primary veins in the plane z = 0 fanning from the petiole base (0, 0, 0) at -70, -35, 0, 35
+// and 70 degrees from +y, lengths 0.7, 0.9, 1.0, 0.9, 0.7, Gaussian segment convolutions of
+// radius `vein_radius` tapering to 0.5 of it, plus the petiole (0, -0.3, 0) -> (0, 0, 0); the
+// blade is the plane z = 0 inside the union of five lobes (an ellipse about each primary
+// vein, half-axes 0.55 length and 0.3 length, centred at 0.55 of the vein) -- no cupping.
+// Four regions for polygonize_regions, as arg max of the returned functions:
+//   0 beyond the blade, 1 inside a vein (vein_radius * (sum D - 0.02) > |z|: the source's
+//   blend rule with the nearest radius taken constant and a floor that drops the thin film
+//   it leaves along the whole blade), 2 above the blade, 3 below.
+// maple_leaf_interest() gives the pairs {(1,2), (1,3), (2,3), (0,1)}: the blade is the (2,3)
+// sheet, ending in free borders at the margin; the veins are closed against 0, 2 and 3; and
+// the edges where the blade meets a vein are shared by the (1,2), (1,3) and (2,3) sheets.
+struct MapleLeaf {
+  std::vector<Fn> regions;              // g_0..g_3 of (x(0), x(1), x(2))
+  std::vector<ConvolutionSegment> veins;
+  Fn vein_density, blade_inside;        // sum D; > 0 inside the outline (in the plane)
+};
+MapleLeaf maple_leaf(double vein_radius = 0.04);
+std::vector<std::pair<int, int>> maple_leaf_interest();
+
+}  // namespace genmod::models
