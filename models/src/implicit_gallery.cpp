@@ -1,6 +1,7 @@
 // The implicit gallery (implicit_gallery.hpp).
 #include "genmod/models/implicit_gallery.hpp"
 
+#include "genmod/models/bloomenthal_models.hpp"
 #include "genmod/models/starfish.hpp"
 #include "genmod/operators/convolution.hpp"
 #include "genmod/operators/shapes.hpp"
@@ -76,6 +77,34 @@ Fn tee(const ParameterValues& p) {
   return density_to_implicit(d);
 }
 
+// Bloomenthal's rotated pair (Fig. 5.46, bloomenthal_models.hpp): two segments sharing an end.
+Fn rotated_pair(const ParameterValues& p) {
+  return density_to_implicit(rotated_pair_density(p.at("bend"), positive(p, "radius")));
+}
+
+// The trifurcated ramiform (Fig. 5.59): max(parent, sum of three children), iso 1.
+Fn ramiform(const ParameterValues& p) {
+  const double r = positive(p, "radius");
+  if (r > 0.2) throw std::invalid_argument("parameter 'radius' must be <= 0.2, got " + std::to_string(r));
+  return density_to_implicit(trifurcated_density(r, p.at("spread")), 1.0);
+}
+
+// Segments against points (Fig. 5.57): a half circle by `count` segments or point sources.
+Fn arc_convolution(const ParameterValues& p) {
+  const double n = p.at("count"), points = p.at("points"), r = positive(p, "radius");
+  if (!(n >= 1 && n <= 100 && n == std::floor(n))) throw std::invalid_argument("parameter 'count' must be an integer in [1, 100]");
+  if (!(points == 0 || points == 1)) throw std::invalid_argument("parameter 'points' must be 0 or 1");
+  if (r > 0.4) throw std::invalid_argument("parameter 'radius' must be <= 0.4");
+  const int count = static_cast<int>(n);
+  return density_to_implicit(points == 1 ? arc_points_density(count, r) : arc_segments_density(count, r));
+}
+
+Fn arm(const ParameterValues& p) { return density_to_implicit(culled_convolution(arm_segments(p.at("elbow"), p.at("bulge")))); }
+
+Fn hand(const ParameterValues& p) {
+  return density_to_implicit(culled_convolution(hand_segments(p.at("grip"), p.at("palm_radius"))));
+}
+
 }  // namespace
 
 const std::vector<ImplicitModel>& implicit_gallery() {
@@ -107,6 +136,32 @@ const std::vector<ImplicitModel>& implicit_gallery() {
        {{"radius", 0.2, "radius of both segments (< 0.5)"},
         {"shorten", 0.0, "1: the stem starts at (r, 0, 0) instead of the junction (removes most of the bulge)"}},
        tee, {Interval(-0.7, 1.9), Interval(-1.4, 1.4), Interval(-0.7, 0.7)}, 0.05},
+      {"rotated_pair",
+       "Bloomenthal's rotated pair (Fig. 5.46): two convolved segments of length 1 sharing an end, bent by an angle; no bulge, no crease",
+       {{"bend", 60.0, "angle between the second segment and the first's direction, degrees in [0, 90]"},
+        {"radius", 0.15, "radius of both segments"}},
+       rotated_pair, {Interval(-1.5, 1.5), Interval(-0.6, 1.5), Interval(-0.6, 0.6)}, 0.025},
+      {"ramiform",
+       "Bloomenthal's trifurcated ramiform (Fig. 5.59, eq. 5.36): max(parent, sum of three children), parent radius sqrt(3) r",
+       {{"radius", 0.08, "child radius r (<= 0.2); the parent's is sqrt(3) r"},
+        {"spread", 40.0, "angle of each child from the parent's direction, degrees in (0, 90)"}},
+       ramiform, {Interval(-0.9, 0.9), Interval(-1.3, 1.1), Interval(-0.9, 0.9)}, 0.02},
+      {"arc_convolution",
+       "Bloomenthal's segments against points (Fig. 5.57): a half circle by count Gaussian segments or weighted point sources",
+       {{"count", 7.0, "number of chords (segments) or of point sources at their midpoints, integer in [1, 100]"},
+        {"points", 0.0, "1: point sources of weight chord / (r sqrt(pi / ln 2)) instead of segments"},
+        {"radius", 0.15, "radius r (<= 0.4)"}},
+       arc_convolution, {Interval(-1.6, 1.6), Interval(-0.65, 1.65), Interval(-0.6, 0.6)}, 0.02},
+      {"arm",
+       "Bloomenthal's arm (Sec. 6.4), reconstructed: five tendon-bulge-tendon muscles and three bones as tapered convolution segments, culled sum",
+       {{"elbow", 30.0, "elbow bend, degrees in [0, 120]"},
+        {"bulge", 1.0, "muscle bulge radius as a fraction of its base, (0, 1.5]"}},
+       arm, {Interval(-0.8, 6.4), Interval(-0.8, 2.6), Interval(-0.9, 0.9)}, 0.04},
+      {"hand",
+       "Bloomenthal's hand (Sec. 6.5, Fig. 6.14): the finger table of the thesis and a reconstructed palm, tendons, veins and thumb muscle; culled sum of 45 convolution segments",
+       {{"grip", 1.0, "scale of every finger's grip angles (0 = straight, 1 = the thesis's table), [0, 2]"},
+        {"palm_radius", 0.2, "radius of the metacarpal segments, inches, (0, 0.3]"}},
+       hand, {Interval(-3.0, 1.2), Interval(-0.9, 3.8), Interval(-0.9, 0.7)}, 0.02},
   };
   return models;
 }
