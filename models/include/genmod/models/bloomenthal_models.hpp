@@ -8,8 +8,9 @@
 // mesher's interval evaluation over a box skips the elements far from it.
 //
 // Example:
+//   using namespace genmod::models;
 //   Fn f = density_to_implicit(rotated_pair_density(60.0, 0.15));
-//   Fn hand = hand_implicit();   // f = 1/2 - D < 0 inside
+//   Fn hand = density_to_implicit(culled_convolution(hand_segments()));   // 1/2 - D < 0 inside
 #pragma once
 
 #include "genmod/kernel/fn.hpp"
