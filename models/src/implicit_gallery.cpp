@@ -152,7 +152,7 @@ const std::vector<ImplicitModel>& implicit_gallery() {
         {"points", 0.0, "1: point sources of weight chord / (r sqrt(pi / ln 2)) instead of segments"},
         {"radius", 0.15, "radius r (<= 0.4)"}},
        arc_convolution, {Interval(-1.6, 1.6), Interval(-0.65, 1.65), Interval(-0.6, 0.6)}, 0.02},
-      {"arm",
+      {"convolution_arm",
        "Bloomenthal's arm (Sec. 6.4), reconstructed: five tendon-bulge-tendon muscles and three bones as tapered convolution segments, culled sum",
        {{"elbow", 30.0, "elbow bend, degrees in [0, 120]"},
         {"bulge", 1.0, "muscle bulge radius as a fraction of its base, (0, 1.5]"}},

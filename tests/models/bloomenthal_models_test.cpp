@@ -40,7 +40,7 @@ MeshValidity mesh_model(const std::string& name, const ParameterValues& params =
 }
 
 TEST(BloomenthalModels, EachMeshesClosedManifoldWithoutSelfIntersections) {
-  for (const char* name : {"tee", "rotated_pair", "ramiform", "arc_convolution", "arm", "hand"}) {
+  for (const char* name : {"tee", "rotated_pair", "ramiform", "arc_convolution", "convolution_arm", "hand"}) {
     SCOPED_TRACE(name);
     const MeshValidity v = mesh_model(name, {}, 1.5);
     EXPECT_TRUE(v.valid()) << describe(v);
@@ -64,7 +64,7 @@ TEST(BloomenthalModels, VariantsMeshValid) {
     }
   const MeshValidity straight = mesh_model("hand", {{"grip", 0.0}}, 2);
   EXPECT_TRUE(straight.valid()) << describe(straight);
-  const MeshValidity bent = mesh_model("arm", {{"elbow", 90.0}}, 2);
+  const MeshValidity bent = mesh_model("convolution_arm", {{"elbow", 90.0}}, 2);
   EXPECT_TRUE(bent.valid()) << describe(bent);
 }
 
@@ -241,7 +241,7 @@ TEST(BloomenthalModels, ParametersAreChecked) {
   EXPECT_THROW(build_implicit_model(*find_implicit_model("rotated_pair"), {{"bend", 120.0}}), std::invalid_argument);
   EXPECT_THROW(build_implicit_model(*find_implicit_model("ramiform"), {{"spread", 95.0}}), std::invalid_argument);
   EXPECT_THROW(build_implicit_model(*find_implicit_model("arc_convolution"), {{"count", 2.5}}), std::invalid_argument);
-  EXPECT_THROW(build_implicit_model(*find_implicit_model("arm"), {{"elbow", -1.0}}), std::invalid_argument);
+  EXPECT_THROW(build_implicit_model(*find_implicit_model("convolution_arm"), {{"elbow", -1.0}}), std::invalid_argument);
   EXPECT_THROW(build_implicit_model(*find_implicit_model("hand"), {{"palm_radius", 0.0}}), std::invalid_argument);
 }
 

@@ -1,6 +1,8 @@
 // Morkel's furniture models as registered procedures (procedural_models.hpp): valid closed
 // meshes, parameters that act, reproducible bytes, refused bad values, and the luggage's leg
 // cache counts of research/morkel.md claim 12.
+#include "genmod/models/gallery.hpp"
+#include "genmod/models/implicit_gallery.hpp"
 #include "genmod/models/procedural_models.hpp"
 
 #include "genmod/procedural/mesh_hash.hpp"
@@ -12,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -39,6 +42,15 @@ std::array<Vec3, 2> box_of(const PolyMesh& mesh) { return bounds(mesh, all_faces
 double extent(const PolyMesh& mesh, int axis) {
   const auto b = box_of(mesh);
   return b[1][axis] - b[0][axis];
+}
+
+// `genmod mesh NAME` finds one model: no name is used by two of the three galleries.
+TEST(ProceduralModels, NoTwoModelsShareAName) {
+  std::map<std::string, int> uses;
+  for (const Model& m : gallery()) ++uses[m.name];
+  for (const ImplicitModel& m : implicit_gallery()) ++uses[m.name];
+  for (const ProceduralModel& m : procedural_gallery()) ++uses[m.name];
+  for (const auto& [name, count] : uses) EXPECT_EQ(count, 1) << name;
 }
 
 TEST(ProceduralModels, GalleryListsTheProceduresWithTheirParameters) {

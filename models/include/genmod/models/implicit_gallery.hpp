@@ -31,8 +31,8 @@ struct ImplicitModel {
 // All implicit models, in a fixed order: sphere_gyroid (libfive's meshing benchmark shape),
 // tanglecube, drilled_block (CSG with sharp edges), blobby (four blended spheres, claim 40 of
 // the thesis), gyroid_sheet, starfish (Bloomenthal's joint, starfish.hpp), tee (Bloomenthal's convolution tee),
-// rotated_pair, ramiform, arc_convolution (his branching demos, §7.5), arm and hand (§7.2-7.3;
-// bloomenthal_models.hpp).
+// rotated_pair, ramiform, arc_convolution (his branching demos, §7.5), convolution_arm and hand
+// (§7.2-7.3; bloomenthal_models.hpp; the arm's name leaves `arm` to the procedural human's).
 const std::vector<ImplicitModel>& implicit_gallery();
 // nullptr when there is no implicit model of that name.
 const ImplicitModel* find_implicit_model(const std::string& name);
