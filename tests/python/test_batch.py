@@ -29,12 +29,14 @@ def check_rows(rows):
     assert rows[3]["triangles"] < rows[4]["triangles"]  # res 8 then 16
 
 
-def test_local_batch_runs_every_job_in_order(tmp_path):
+def test_local_batch_runs_every_job_in_order(tmp_path, capsys):
     seen = []
     rows = batch.run(JOBS, tmp_path, threads=2, progress=lambda done, total: seen.append((done, total)))
     check_rows(rows)
     assert (tmp_path / "knob.ply").stat().st_size > 0 and not (tmp_path / "bad.obj").exists()
     assert seen[-1] == (5, 5)
+    batch.run("sphere res=8 out=s.obj", tmp_path / "shown", progress=True)
+    assert capsys.readouterr().err.endswith("genmod batch: 1/1 jobs\n")
     with pytest.raises(RuntimeError, match="no_such_model"):
         batch.parse("no_such_model out=x.obj")
 

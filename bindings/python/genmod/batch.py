@@ -16,6 +16,7 @@ worker lost more often than the scheduler allows) is an "error" row with the rea
 dropped.
 """
 import os
+import sys
 
 from . import _genmod
 
@@ -37,6 +38,12 @@ def _lost(line, error):
             "message": f"worker failed: {type(error).__name__}: {error}"}
 
 
+def _print_progress(done, total):
+    """progress=True: a one-line counter on standard error."""
+    sys.stderr.write(f"\rgenmod batch: {done}/{total} jobs" + ("\n" if done == total else ""))
+    sys.stderr.flush()
+
+
 def run(jobs, output_dir, client=None, threads=0, validate=True, retries=2, progress=None):
     """Runs the jobs; meshes are written under output_dir (relative out= paths).
 
@@ -45,7 +52,9 @@ def run(jobs, output_dir, client=None, threads=0, validate=True, retries=2, prog
     is). retries: times a job that raised on a worker is resubmitted. A job whose worker dies
     is rerun by the scheduler elsewhere, up to Dask's distributed.scheduler.allowed-failures
     times (default 3); after that its row is an error naming KilledWorker. progress(done,
-    total) is called as jobs finish."""
+    total) is called as jobs finish; progress=True prints a counter on standard error."""
+    if progress is True:
+        progress = _print_progress
     lines = parse(jobs)
     output_dir = os.path.abspath(str(output_dir))
     os.makedirs(output_dir, exist_ok=True)
