@@ -2,6 +2,7 @@
 // (Algorithm 5.4, trimmed_csg.hpp), e.g. the drilled bumpy sphere.
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "file_arguments.hpp"
 #include "option_values.hpp"
 
 #include "genmod/models/trimmed_csg.hpp"
@@ -22,23 +23,20 @@ int run_mesh_csg(std::span<const std::string> args) {
   if (a.positional().size() != 1)
     throw UsageError("expected one model name, got " + std::to_string(a.positional().size()));
   const std::string& name = a.positional()[0];
-  const std::optional<std::string> output = a.value({"-o", "--output"});
-  if (!output) throw UsageError("missing output file (-o FILE)");
-  if (!mesh_format(*output))
-    throw UsageError("output '" + *output + "': unknown mesh extension (use .obj, .ply, .stl or .off)");
+  const std::string output = mesh_output_argument(a);
   models::TrimmedCsgOptions options;
   if (const auto text = a.value({"--tolerance"})) {
     options.tolerance = parse_number("--tolerance", *text);
     if (!(options.tolerance > 0)) throw UsageError("--tolerance must be > 0");
   }
-  check_writable(*output);
+  check_writable(output);
   const models::TrimmedCsgResult r = models::mesh_csg_model(name, options);
-  write_mesh(r.mesh, *output);
+  write_mesh(r.mesh, output);
   std::printf("%s (CSG of trimmed surfaces): %zu vertices, %zu triangles (%zu + %zu), %zu seam vertices, in %.3f s -> %s\n",
               name.c_str(), r.mesh.vertices.size(), r.mesh.triangles.size(), r.triangles_first, r.triangles_second,
-              r.seam.size(), r.seconds, output->c_str());
+              r.seam.size(), r.seconds, output.c_str());
   if (a.has("--no-check")) return 0;
-  const MeshValidity v = validate(read_mesh(*output));
+  const MeshValidity v = validate(read_mesh(output));
   std::printf("%s", describe(v).c_str());
   return v.valid() ? 0 : 1;
 }

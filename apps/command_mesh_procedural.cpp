@@ -2,6 +2,7 @@
 // procedures, procedural_models.hpp) as the triangulation of the polygon mesh it builds.
 #include "arguments.hpp"
 #include "commands.hpp"
+#include "file_arguments.hpp"
 #include "option_values.hpp"
 
 #include "genmod/models/procedural_models.hpp"
@@ -74,10 +75,7 @@ int run_mesh_procedural(std::span<const std::string> args) {
   if (a.positional().size() != 1)
     throw UsageError("expected one model name, got " + std::to_string(a.positional().size()));
   const std::string& name = a.positional()[0];
-  const std::optional<std::string> output = a.value({"-o", "--output"});
-  if (!output) throw UsageError("missing output file (-o FILE)");
-  if (!mesh_format(*output))
-    throw UsageError("output '" + *output + "': unknown mesh extension (use .obj, .ply, .stl or .off)");
+  const std::string output = mesh_output_argument(a);
   std::int64_t seed = 0;
   if (const auto text = a.value({"--seed"})) {
     char* end = nullptr;
@@ -86,7 +84,7 @@ int run_mesh_procedural(std::span<const std::string> args) {
     if (text->empty() || end != text->c_str() + text->size() || errno == ERANGE)
       throw UsageError("--seed: '" + *text + "' is not an integer");
   }
-  check_writable(*output);
+  check_writable(output);
 
   const ProcedureSpec& spec = models::procedural_registry().spec(name);
   NamedArgs named;
@@ -99,12 +97,12 @@ int run_mesh_procedural(std::span<const std::string> args) {
     throw UsageError(e.what());  // unknown parameter, wrong type, value out of range
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write_mesh(mesh, *output);
+  write_mesh(mesh, output);
   std::printf("%s (procedural, seed %lld): %zu vertices, %zu triangles in %.3f s -> %s\n", name.c_str(),
-              static_cast<long long>(seed), mesh.vertices.size(), mesh.triangles.size(), seconds, output->c_str());
+              static_cast<long long>(seed), mesh.vertices.size(), mesh.triangles.size(), seconds, output.c_str());
   if (a.has("--no-check")) return 0;
   // The file as written is what users get: check that, not the mesh in memory.
-  const MeshValidity v = validate(read_mesh(*output));
+  const MeshValidity v = validate(read_mesh(output));
   std::printf("%s", describe(v).c_str());
   return v.valid() ? 0 : 1;
 }

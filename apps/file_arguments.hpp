@@ -1,4 +1,4 @@
-// The mesh file a command reads (genmod check, genmod preview).
+// The mesh files a command reads (genmod check, genmod preview) and writes (genmod mesh).
 #pragma once
 
 #include "arguments.hpp"
@@ -9,5 +9,8 @@ namespace genmod::app {
 
 // The single positional argument, a mesh file with a mesh extension (UsageError otherwise).
 const std::string& mesh_file_argument(const Arguments& a);
+// The value of -o / --output, a file with a mesh extension (UsageError when it is missing or
+// has another extension).
+std::string mesh_output_argument(const Arguments& a);
 
 }  // namespace genmod::app

@@ -7,6 +7,7 @@
 #include "genmod/kernel/batch_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
 #include "genmod/kernel/vm_format.hpp"
+#include "../cpu_time.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -16,18 +17,9 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-}  // namespace
-
 int main(int argc, char** argv) try {
   using namespace genmod;
+  using bench::cpu_seconds;
   if (argc != 4) {
     std::fprintf(stderr, "usage: genmod_points_bench MODEL.vm N REPEATS\n");
     return 2;

@@ -34,6 +34,8 @@
 #include "genmod/tessellate/preview.hpp"
 #include "genmod/tessellate/validate.hpp"
 
+#include "../cpu_time.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -48,23 +50,8 @@ namespace {
 
 using namespace genmod;
 
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-template <class F>
-double median_cpu(int repeats, F&& run) {
-  std::vector<double> t;
-  for (int i = 0; i < repeats; ++i) {
-    const double t0 = cpu_seconds();
-    run();
-    t.push_back(cpu_seconds() - t0);
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
+using bench::cpu_seconds;
+using bench::median_cpu;
 
 struct Shape {
   std::string name;

@@ -37,6 +37,8 @@
 #include "genmod/tessellate/implicit_mesher.hpp"
 #include "genmod/tessellate/validate.hpp"
 
+#include "../cpu_time.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -50,23 +52,8 @@ namespace {
 
 using namespace genmod;
 
-double cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-template <class F>
-double median_cpu(int repeats, F&& run) {
-  std::vector<double> t;
-  for (int i = 0; i < repeats; ++i) {
-    const double t0 = cpu_seconds();
-    run();
-    t.push_back(cpu_seconds() - t0);
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
+using bench::cpu_seconds;
+using bench::median_cpu;
 
 // The cube of side 2^k h (the smallest >= side) centred at c.
 Box3 lattice_cube(const std::array<double, 3>& c, double side, double h) {

@@ -23,6 +23,7 @@
 #include "genmod/tessellate/nonmanifold_polygonizer.hpp"
 #include "genmod/tessellate/png_io.hpp"
 #include "genmod/tessellate/preview.hpp"
+#include "tessellate/region_shapes.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -42,17 +43,8 @@ Box3 cube_box(double h) { return {Interval(-h, h), Interval(-h, h), Interval(-h,
 
 double cpu_ms(std::clock_t start) { return 1000.0 * static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC; }
 
-std::vector<Fn> half_balls(double r) {
-  const Fn d = r - R;
-  return {min(d, Z), min(d, -Z), -d};
-}
-
-std::vector<Fn> sphere_square(double r, double s) {
-  const Fn ball = r - R;
-  const Fn outside = max(max(abs(X), abs(Y)), abs(Z)) - s;
-  const Fn rest = min(-ball, -outside);
-  return {ball, outside, min(rest, Z), min(rest, -Z)};
-}
+using test::half_balls;
+using test::sphere_square;
 
 void print_regions(const char* name, double h, const std::vector<Fn>& regions, const NonmanifoldSettings& s) {
   const std::clock_t t0 = std::clock();

@@ -5,6 +5,7 @@
 // rejected input.
 #include "genmod/tessellate/nonmanifold_polygonizer.hpp"
 #include "genmod/tessellate/validate.hpp"
+#include "tessellate/region_shapes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,20 +30,8 @@ Box3 cube_box(double h) { return {Interval(-h, h), Interval(-h, h), Interval(-h,
 // Two regions: inside (0) and outside (1) a sphere of radius r.
 std::vector<Fn> sphere_regions(double r) { return {r - R, R - r}; }
 
-// Three regions: the upper (0) and lower (1) halves of a ball of radius r, and outside (2).
-std::vector<Fn> half_balls(double r) {
-  const Fn d = r - R;
-  return {min(d, Z), min(d, -Z), -d};
-}
-
-// The sphere-square of Fig. 4.9 with the spec's regions 1..4 as 0..3: the ball (0), outside
-// the cube of half side s (1), above (2) and below (3) the plane z = 0.
-std::vector<Fn> sphere_square(double r, double s) {
-  const Fn ball = r - R;
-  const Fn outside = max(max(abs(X), abs(Y)), abs(Z)) - s;
-  const Fn rest = min(-ball, -outside);
-  return {ball, outside, min(rest, Z), min(rest, -Z)};
-}
+using test::half_balls;
+using test::sphere_square;
 
 using Edge = std::pair<std::uint32_t, std::uint32_t>;
 
