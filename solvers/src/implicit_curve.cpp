@@ -79,6 +79,7 @@ class CurveBuilder {
     for (const Interval& s : X) scale = std::max(scale, s.width());
     point_opt_.epsilon = opt.point_epsilon * scale;
     merge_tol_ = point_opt_.epsilon;
+    touch_tol_ = std::max(merge_tol_, opt.touch_tolerance * scale);
     point_opt_.threads = 1;
     point_opt_.limits.max_boxes = 20000;
     point_opt_.limits.max_depth = 200;
@@ -102,6 +103,7 @@ class CurveBuilder {
   bool limit_reached();
   void split_or_unresolved(const Work& w, std::deque<Work>& work);
   bool solve_face(const Box& Y, std::size_t j, bool high, std::vector<std::size_t>& out);
+  void merge_touching_fragments(std::vector<Box>& found, std::vector<bool>& certified) const;
   SliceAnswer solve_slice(const Box& Y, std::size_t k, double c, std::vector<double>& sample);
   Box refine(std::size_t fixed, double c, const SolutionComponent& comp);
   bool process(const Work& w, const std::vector<int>& candidates, std::vector<Link>& links, int& param);
@@ -117,6 +119,7 @@ class CurveBuilder {
   double min_width_ = 0;
   SolveOptions point_opt_;
   double merge_tol_ = 0;
+  double touch_tol_ = 0;  // uncertified fragments of one face point (merge_touching_fragments)
   std::vector<bool> periodic_;
   LimitWatch watch_{opt_.limits};
 
@@ -176,6 +179,29 @@ Box CurveBuilder::refine(std::size_t fixed, double c, const SolutionComponent& c
   return nb;
 }
 
+// Where the curve touches a face tangentially, the face system has a double root: its
+// residual is quadratic there, so the solver cannot exclude boxes over a spread of about
+// sqrt(rounding) around the touching point and returns them as several uncertified fragments
+// (a few 1e-9 apart on the acceptance suite's cylinders). They are one boundary point: the
+// uncertified components closer than the touch tolerance are replaced by their hull (single
+// linkage). Certified components are never merged. Merging keeps every box's points, and
+// whether the curve touches, crosses twice inside the hull or passes just short of the face, it
+// is one arc through that hull, so the links stay right; two distinct branches merged by it
+// would show as a branch node (complete() false), not as a wrong curve.
+void CurveBuilder::merge_touching_fragments(std::vector<Box>& found, std::vector<bool>& certified) const {
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (std::size_t a = 0; a < found.size() && !merged; ++a)
+      for (std::size_t b = a + 1; b < found.size() && !merged; ++b)
+        if (!certified[a] && !certified[b] && touches(found[a], found[b], touch_tol_)) {
+          found[a] = hull(found[a], found[b]);
+          found.erase(found.begin() + static_cast<std::ptrdiff_t>(b));
+          certified.erase(certified.begin() + static_cast<std::ptrdiff_t>(b));
+          merged = true;
+        }
+  }
+}
+
 // Boundary intersections on the face x_j = (high ? hi : lo) of Y: the (n-1)-unknown system
 // F = 0 with x_j a fixed parameter. False when the solve did not finish.
 bool CurveBuilder::solve_face(const Box& Y, std::size_t j, bool high, std::vector<std::size_t>& out) {
@@ -204,9 +230,15 @@ bool CurveBuilder::solve_face(const Box& Y, std::size_t j, bool high, std::vecto
     }
   FreeParameters fixed{{coords_[j]}, {Interval(c, c)}};
   const SolveResult r = solve(constraint_, unknowns, sub, point_opt_, fixed);
-  std::vector<std::size_t> ids;
+  std::vector<Box> found;
+  std::vector<bool> certified;
   for (const SolutionComponent& comp : r.components) {
-    const Box h = refine(j, c, comp);
+    found.push_back(refine(j, c, comp));
+    certified.push_back(comp.unique);
+  }
+  merge_touching_fragments(found, certified);
+  std::vector<std::size_t> ids;
+  for (const Box& h : found) {
     Box p;
     for (std::size_t i = 0, q = 0; i < n_; ++i) p.push_back(i == j ? Interval(c, c) : h[q++]);
     ids.push_back(points_.size());
@@ -518,6 +550,7 @@ ImplicitCurve approximate_implicit_curve(const Fn& F, std::span<const int> coord
   }
   check_search_box(X, n, who);
   if (!(options.acceptance_width > 0)) throw std::invalid_argument("genmod: " + who + ": acceptance_width must be > 0");
+  if (!(options.touch_tolerance >= 0)) throw std::invalid_argument("genmod: " + who + ": touch_tolerance must be >= 0");
   if (!(options.point_epsilon > 0)) throw std::invalid_argument("genmod: " + who + ": point_epsilon must be > 0");
   if (!(options.min_width >= 0)) throw std::invalid_argument("genmod: " + who + ": min_width must be >= 0");
   for (int p : options.periodic)

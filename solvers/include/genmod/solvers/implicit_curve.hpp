@@ -71,6 +71,10 @@ struct ImplicitCurveOptions {
   // Width of the boxes that locate face and slice points (solve()'s epsilon), relative to the
   // largest side of X. > 0.
   double point_epsilon = 1e-10;
+  // Uncertified face points closer than this (relative to the largest side of X) are one point:
+  // where the curve touches a box face tangentially (a turning point on a bisection line), the
+  // face's double root comes back as fragments spread over about sqrt(rounding). >= 0.
+  double touch_tolerance = 1e-7;
   // Coordinates (values from `coords`) whose two ends of X are the same point (u of a torus):
   // a polyline reaching one end continues at the other.
   std::vector<int> periodic;
