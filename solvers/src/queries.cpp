@@ -153,7 +153,7 @@ RayHit ray_hit_implicit(const Fn& f, std::array<double, 3> origin, std::array<do
 }
 
 SurfaceIntersection surface_intersection(const Fn& a, const Fn& b, std::span<const Interval> a_domain,
-                                         std::span<const Interval> b_domain, const ImplicitCurveOptions& options) {
+                                         std::span<const Interval> b_domain, const SurfaceIntersectionOptions& options) {
   if (a.dim() != 3 || b.dim() != 3)
     throw std::invalid_argument("genmod: surface_intersection: surfaces must have dimension 3, got " +
                                 std::to_string(a.dim()) + " and " + std::to_string(b.dim()));
@@ -168,8 +168,15 @@ SurfaceIntersection surface_intersection(const Fn& a, const Fn& b, std::span<con
   const Fn au = rename_parameters(a, uv, "surface_intersection: the first surface");
   const Fn bs = rename_parameters(b, st, "surface_intersection: the second surface");
   const int coords[] = {0, 1, 2, 3};
+  if (!options.curve.periodic.empty())
+    throw std::invalid_argument(
+        "genmod: surface_intersection: set periodic_u, periodic_v, periodic_s, periodic_t instead of curve.periodic");
+  ImplicitCurveOptions curve = options.curve;
+  const bool periodic[] = {options.periodic_u, options.periodic_v, options.periodic_s, options.periodic_t};
+  for (int i = 0; i < 4; ++i)
+    if (periodic[i]) curve.periodic.push_back(i);
   SurfaceIntersection out;
-  out.curve = approximate_implicit_curve(au - bs, coords, box, options);
+  out.curve = approximate_implicit_curve(au - bs, coords, box, curve);
   const Tape at(au, std::vector<int>{0, 1});
   PointEvaluator pe;
   for (const Polyline& line : out.curve.components) {

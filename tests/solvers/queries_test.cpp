@@ -188,8 +188,8 @@ TEST(Queries, SphereMeetsPlaneInOneCircle) {
   // The unit sphere and the plane z = 0.5 (a parametric patch): the circle of radius
   // sqrt(0.75) at z = 0.5.
   const Fn plane = cat({4 * x(0) - 2, 4 * x(1) - 2, Fn(0.5)});
-  ImplicitCurveOptions opt;
-  opt.acceptance_width = 0.3;
+  SurfaceIntersectionOptions opt;
+  opt.curve.acceptance_width = 0.3;
   const SurfaceIntersection r = surface_intersection(unit_sphere(), plane, {}, {}, opt);
   ASSERT_EQ(r.components.size(), 1u);
   std::size_t points = 0;
@@ -201,6 +201,8 @@ TEST(Queries, SphereMeetsPlaneInOneCircle) {
   EXPECT_GT(points, 8u);
   EXPECT_TRUE(r.complete());
   EXPECT_THROW(surface_intersection(circle(1.0), plane), std::invalid_argument);
+  opt.curve.periodic = {0};  // the numbering of the four parameters is not the caller's business
+  EXPECT_THROW(surface_intersection(unit_sphere(), plane, {}, {}, opt), std::invalid_argument);
 }
 
 // The unit cylinder about z and the cylinder of radius 0.6 about x, both periodic in their
@@ -208,9 +210,7 @@ TEST(Queries, SphereMeetsPlaneInOneCircle) {
 SurfaceIntersection crossed_cylinders(double u_phase, double t_phase, double shift) {
   const Fn a = cat({cos(2 * kPi * x(0) + u_phase), sin(2 * kPi * x(0) + u_phase), 4 * x(1) - 2});
   const Fn b = cat({4 * x(0) - 2 + shift, 0.6 * cos(2 * kPi * x(1) + t_phase), 0.6 * sin(2 * kPi * x(1) + t_phase)});
-  ImplicitCurveOptions opt;
-  opt.periodic = {0, 3};  // u and t
-  return surface_intersection(a, b, {}, {}, opt);
+  return surface_intersection(a, b, {}, {}, {.periodic_u = true, .periodic_t = true});
 }
 
 TEST(Queries, CylindersMeetInTwoClosedLoopsWhenTurningPointsFallOnBisectionLines) {

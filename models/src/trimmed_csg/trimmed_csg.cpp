@@ -359,13 +359,11 @@ PairCurve pair_curve(const ClosedSurface& first, const ClosedSurface& second, co
                      Builder& b, std::set<std::uint32_t>& seam) {
   PairCurve out;
   // Step 1: the intersection curve in (u, v, s, t).
-  ImplicitCurveOptions co;
-  co.acceptance_width = options.curve_width;
-  if (first.periodic_u) co.periodic.push_back(0);
-  if (first.periodic_v) co.periodic.push_back(1);
-  if (second.periodic_u) co.periodic.push_back(2);
-  if (second.periodic_v) co.periodic.push_back(3);
-  co.limits.time_limit = options.curve_time;
+  SurfaceIntersectionOptions co{.periodic_u = first.periodic_u, .periodic_v = first.periodic_v,
+                                .periodic_s = second.periodic_u, .periodic_t = second.periodic_v};
+  co.curve.acceptance_width = options.curve_width;
+  co.curve.limits.time_limit = options.curve_time;
+  const bool periodic[] = {co.periodic_u, co.periodic_v, co.periodic_s, co.periodic_t};
   const SurfaceIntersection si = surface_intersection(first.surface, second.surface, {}, {}, co);
   out.complete = si.complete();
   if (!out.complete) throw std::runtime_error("trimmed_csg: the intersection curve is incomplete");
@@ -407,8 +405,8 @@ PairCurve pair_curve(const ClosedSurface& first, const ClosedSurface& second, co
       if (!wraps.count(i)) continue;
       int c = -1;
       double gap = 0.0;
-      for (int pc : co.periodic)
-        if (std::abs(q[pc] - p[pc]) > gap) gap = std::abs(q[pc] - p[pc]), c = pc;
+      for (int pc = 0; pc < 4; ++pc)
+        if (periodic[pc] && std::abs(q[pc] - p[pc]) > gap) gap = std::abs(q[pc] - p[pc]), c = pc;
       if (c < 0 || gap < 0.5) continue;
       const double side = p[c] > q[c] ? 1.0 : 0.0;
       if (std::abs(p[c] - side) < 1e-12 && std::abs(q[c] - (1.0 - side)) < 1e-12) {

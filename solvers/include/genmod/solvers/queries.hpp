@@ -90,11 +90,29 @@ struct SurfaceIntersection {
   bool complete() const noexcept { return curve.complete(); }
 };
 
+struct SurfaceIntersectionOptions {
+  // Parameters whose two ends are the same point (the angle of a cylinder or a torus): the
+  // curve continues across them. u, v are the first surface's, s, t the second's.
+  bool periodic_u = false, periodic_v = false, periodic_s = false, periodic_t = false;
+  // The curve search in (u, v, s, t); its `periodic` list must stay empty (the flags above set
+  // it).
+  ImplicitCurveOptions curve;
+};
+
 // Intersection curves of the parametric surfaces a(u, v) and b(s, t) (dimension 3) over
-// their parameter boxes (default [0,1]^2 each).
+// their parameter boxes (default [0,1]^2 each). Throws std::invalid_argument naming the problem
+// (a surface that is not 3-D or has more than two parameters, a bad domain, options.curve.periodic
+// not empty).
+//
+// Example:
+//   const double pi = std::numbers::pi;
+//   Fn a = cat({cos(2 * pi * x(0)), sin(2 * pi * x(0)), 4 * x(1) - 2});              // about z
+//   Fn b = cat({4 * x(0) - 2, 0.6 * cos(2 * pi * x(1)), 0.6 * sin(2 * pi * x(1))});  // about x
+//   SurfaceIntersection r = surface_intersection(a, b, {}, {}, {.periodic_u = true, .periodic_t = true});
+//   // r.components: 2 closed loops, r.complete()
 SurfaceIntersection surface_intersection(const Fn& a, const Fn& b, std::span<const Interval> a_domain = {},
                                          std::span<const Interval> b_domain = {},
-                                         const ImplicitCurveOptions& options = {});
+                                         const SurfaceIntersectionOptions& options = {});
 
 struct ClosestPoint {
   Interval distance;                 // guaranteed bracket of the distance
