@@ -62,23 +62,23 @@ void bind_solver_operators(py::module_& m) {
       py::arg("epsilon") = 1e-12,
       "GENMOD's m_inverse: the t in domain where invert (monotone in x(parameter) = t) equals match, as a function.");
   m.def("solve_operator", [](const Fn& c, const std::vector<int>& unknowns, const DoubleArray& domain, double epsilon) {
-        return solve(c, unknowns, box_from_array(domain, "genmod.solve_operator: domain"), epsilon);
+        return solve_operator(c, unknowns, box_from_array(domain, "genmod.solve_operator: domain"), epsilon);
       }, py::arg("constraint"), py::arg("unknowns"), py::arg("domain"), py::arg("epsilon") = 1e-9,
       "GENMOD's m_solve: the solution of the constraint for the unknowns as a function of the other coordinates.");
   m.def("solve_all_operator", [](const Fn& c, const std::vector<int>& unknowns, const DoubleArray& domain,
                                  double epsilon, int max_solutions) {
-        return solve_all(c, unknowns, box_from_array(domain, "genmod.solve_all_operator: domain"), epsilon, max_solutions);
+        return solve_all_operator(c, unknowns, box_from_array(domain, "genmod.solve_all_operator: domain"), epsilon, max_solutions);
       }, py::arg("constraint"), py::arg("unknowns"), py::arg("domain"), py::arg("epsilon") = 1e-9,
       py::arg("max_solutions") = 4, "The count and up to max_solutions solution points, as one function.");
   m.def("minimize_operator", [](const Fn& f, const std::vector<int>& unknowns, const DoubleArray& domain,
                                 const std::optional<Fn>& constraint, double epsilon) {
-        return minimize(f, constraint ? *constraint : Fn(1.0), unknowns,
+        return minimize_operator(f, constraint ? *constraint : Fn(1.0), unknowns,
                         box_from_array(domain, "genmod.minimize_operator: domain"), epsilon);
       }, py::arg("objective"), py::arg("unknowns"), py::arg("domain"), py::arg("constraint") = std::optional<Fn>{},
       py::arg("epsilon") = 1e-9, "GENMOD's m_minimize: the global minimizer as a function of the other coordinates.");
   m.def("minimum_value_operator", [](const Fn& f, const std::vector<int>& unknowns, const DoubleArray& domain,
                                      const std::optional<Fn>& constraint, double epsilon) {
-        return minimum_value(f, constraint ? *constraint : Fn(1.0), unknowns,
+        return minimum_value_operator(f, constraint ? *constraint : Fn(1.0), unknowns,
                              box_from_array(domain, "genmod.minimum_value_operator: domain"), epsilon);
       }, py::arg("objective"), py::arg("unknowns"), py::arg("domain"), py::arg("constraint") = std::optional<Fn>{},
       py::arg("epsilon") = 1e-9, "The minimum value as a function of the other coordinates.");

@@ -65,7 +65,7 @@ Fn reparameterize_to_closest(const Fn& inner, const Fn& outer, int parm, double 
   Fn squared = Fn(0.0);  // the squared distance: the same minimizer as the distance, and smooth
   for (std::size_t j = 0; j < inner.dim(); ++j) squared += square(candidate[j] - outer[j]);
   const int unknowns[] = {s};
-  const Fn closest = minimize(squared, Fn(1.0), unknowns, Box{Interval(0.0, 1.0)}, epsilon);
+  const Fn closest = minimize_operator(squared, Fn(1.0), unknowns, Box{Interval(0.0, 1.0)}, epsilon);
   return compose(inner, parm, closest);
 }
 

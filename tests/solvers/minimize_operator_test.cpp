@@ -23,8 +23,8 @@ Fn objective() { return square(x(0) - x(1)) + square(x(1)); }
 const int kUnknowns[] = {0};
 
 TEST(MinimizeOperator, PointValues) {
-  const Fn v = minimum_value(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
-  const Fn m = minimize(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  const Fn v = minimum_value_operator(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  const Fn m = minimize_operator(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
   EXPECT_EQ(v.dim(), 1u);
   EXPECT_EQ(m.dim(), 1u);
   EXPECT_EQ(v.inputs(), std::vector<int>{1});
@@ -35,7 +35,7 @@ TEST(MinimizeOperator, PointValues) {
 }
 
 TEST(MinimizeOperator, EnvelopeDerivativeOfTheMinimumValue) {
-  const Fn v = minimum_value(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-9);
+  const Fn v = minimum_value_operator(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-9);
   const Fn d = derivative(v, 1);
   const double h = 1e-3;
   for (double p : {-0.6, 0.2, 0.9}) {
@@ -43,7 +43,7 @@ TEST(MinimizeOperator, EnvelopeDerivativeOfTheMinimumValue) {
     EXPECT_NEAR(at(d, {0, p}), (at(v, {0, p + h}) - at(v, {0, p - h})) / (2 * h), 1e-3) << p;
   }
   // The minimizer x0 = x1 has derivative 1 (implicit function theorem on grad f = 0).
-  const Fn m = minimize(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  const Fn m = minimize_operator(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
   EXPECT_NEAR(at(derivative(m, 1), {0, 0.3}), 1.0, 1e-9);
 }
 
@@ -53,7 +53,7 @@ TEST(MinimizeOperator, MinimizerDerivative) {
   // (x0 - sin p)^2 + (2 x1 - p^2)^2 has the minimizer (sin p, p^2 / 2).
   const Fn p = x(2);
   const Fn f = square(x(0) - sin(p)) + square(2 * x(1) - square(p));
-  const Fn m = minimize(f, Fn(1.0), unknowns, {Interval(-2, 2), Interval(-2, 2)}, 1e-9);
+  const Fn m = minimize_operator(f, Fn(1.0), unknowns, {Interval(-2, 2), Interval(-2, 2)}, 1e-9);
   const Fn dm = derivative(m, 2);
   for (double q : {-0.7, 0.3, 1.1}) {
     const auto v = evaluate(m, std::vector<double>{0, 0, q});
@@ -69,7 +69,7 @@ TEST(MinimizeOperator, MinimizerDerivative) {
 TEST(MinimizeOperator, AllMinimizersUpToAMaximum) {
   const int unknowns[] = {0};
   const Fn f = square(square(x(0)) - x(1));
-  const Fn all = minimize_all(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-7, 3);
+  const Fn all = minimize_all_operator(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-7, 3);
   ASSERT_EQ(all.dim(), 4u);
   const Fn d = derivative(all, 1);
   for (double p : {0.5, 1.5}) {
@@ -82,12 +82,12 @@ TEST(MinimizeOperator, AllMinimizersUpToAMaximum) {
     EXPECT_NEAR(dv[1], -0.5 / std::sqrt(p), 1e-3);
     EXPECT_NEAR(dv[2], 0.5 / std::sqrt(p), 1e-3);
   }
-  EXPECT_THROW(minimize_all(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-7, 0), std::invalid_argument);
+  EXPECT_THROW(minimize_all_operator(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-7, 0), std::invalid_argument);
 }
 
 TEST(MinimizeOperator, InclusionContainsSampledValues) {
-  const Fn v = minimum_value(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
-  const Fn m = minimize(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  const Fn v = minimum_value_operator(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  const Fn m = minimize_operator(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
   const Tape tv(v), tm(m);
   IntervalEvaluator iv;
   std::mt19937 rng(17);
@@ -108,7 +108,7 @@ TEST(MinimizeOperator, InclusionContainsSampledValues) {
 
 TEST(MinimizeOperator, InfeasibleIsAnError) {
   // x0 >= x1 + 3 has no solution in [-2, 2] for x1 > -1.
-  const Fn v = minimum_value(objective(), x(0) >= x(1) + 3.0, kUnknowns, {Interval(-2, 2)}, 1e-8);
+  const Fn v = minimum_value_operator(objective(), x(0) >= x(1) + 3.0, kUnknowns, {Interval(-2, 2)}, 1e-8);
   EXPECT_TRUE(std::isnan(at(v, {0, 0.5})));
   IntervalEvaluator iv;
   const Interval y = iv.eval(Tape(v), {Interval(0.0, 1.0)})[0];
@@ -117,11 +117,11 @@ TEST(MinimizeOperator, InfeasibleIsAnError) {
 }
 
 TEST(MinimizeOperator, BadInputThrows) {
-  EXPECT_THROW(minimize(cat({x(0), x(0)}), Fn(1.0), kUnknowns, {Interval(0, 1)}, 1e-6), std::invalid_argument);
-  EXPECT_THROW(minimize(x(0), cat({x(0), x(0)}), kUnknowns, {Interval(0, 1)}, 1e-6), std::invalid_argument);
-  EXPECT_THROW(minimum_value(x(0), Fn(1.0), kUnknowns, {Interval(0, 1), Interval(0, 1)}, 1e-6), std::invalid_argument);
-  EXPECT_THROW(minimum_value(x(0), Fn(1.0), kUnknowns, {Interval(0, 1)}, 0.0), std::invalid_argument);
-  EXPECT_THROW(minimum_value(x(0), Fn(1.0), kUnknowns, {Interval::entire()}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(minimize_operator(cat({x(0), x(0)}), Fn(1.0), kUnknowns, {Interval(0, 1)}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(minimize_operator(x(0), cat({x(0), x(0)}), kUnknowns, {Interval(0, 1)}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(minimum_value_operator(x(0), Fn(1.0), kUnknowns, {Interval(0, 1), Interval(0, 1)}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(minimum_value_operator(x(0), Fn(1.0), kUnknowns, {Interval(0, 1)}, 0.0), std::invalid_argument);
+  EXPECT_THROW(minimum_value_operator(x(0), Fn(1.0), kUnknowns, {Interval::entire()}, 1e-6), std::invalid_argument);
 }
 
 }  // namespace

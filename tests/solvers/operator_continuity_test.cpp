@@ -73,12 +73,12 @@ TEST(OperatorContinuity, InverseNestedInSolveIsCertified) {
 TEST(OperatorContinuity, SolveIsContinuousWhereTheSolutionIsUnique) {
   const int u[] = {0};
   const Fn c = eq(square(x(0)) + square(x(1)), 1.0);
-  const Fn one = solve(c, u, {Interval(0.0, 2.0)}, 1e-9);
-  const Fn two = solve(c, u, {Interval(-2.0, 2.0)}, 1e-9);
+  const Fn one = solve_operator(c, u, {Interval(0.0, 2.0)}, 1e-9);
+  const Fn two = solve_operator(c, u, {Interval(-2.0, 2.0)}, 1e-9);
   EXPECT_TRUE(continuous_on(one, 0.2, 0.4));
   EXPECT_TRUE(continuous_on(one, 0.3, 0.3));
   EXPECT_FALSE(continuous_on(two, 0.2, 0.4));
-  EXPECT_FALSE(continuous_on(solve_all(c, u, {Interval(0.0, 2.0)}, 1e-9, 2), -0.5, 0.5));
+  EXPECT_FALSE(continuous_on(solve_all_operator(c, u, {Interval(0.0, 2.0)}, 1e-9, 2), -0.5, 0.5));
   // Nested in solve: sqrt(1 - x1^2) = 0.8 at x1 = 0.6, certified.
   expect_certified_root(one, 0.8, Interval(0.0, 0.9), 0.6);
 }
@@ -99,7 +99,7 @@ TEST(OperatorContinuity, IntegrateIsContinuousWhereTheIntegrandIs) {
 TEST(OperatorContinuity, MinimizeMakesNoClaim) {
   const int u[] = {0};
   const Fn f = square(square(x(0)) - 1.0) + x(0) * x(1);  // argmin jumps from +1 to -1 at x1 = 0
-  EXPECT_FALSE(continuous_on(minimize(f, Fn(1.0), u, {Interval(-2.0, 2.0)}, 1e-6), -0.1, 0.1));
+  EXPECT_FALSE(continuous_on(minimize_operator(f, Fn(1.0), u, {Interval(-2.0, 2.0)}, 1e-6), -0.1, 0.1));
 }
 
 }  // namespace

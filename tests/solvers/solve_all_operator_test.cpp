@@ -15,7 +15,7 @@ constexpr double kPi = std::numbers::pi;
 const int kUnknown[] = {0};
 
 // sin x = p on [0, 4 pi]: four solutions asin p, pi - asin p, 2 pi + asin p, 3 pi - asin p.
-Fn sines(int k) { return solve_all(eq(sin(x(0)), x(1)), kUnknown, {Interval(0, 4 * kPi)}, 1e-10, k); }
+Fn sines(int k) { return solve_all_operator(eq(sin(x(0)), x(1)), kUnknown, {Interval(0, 4 * kPi)}, 1e-10, k); }
 
 std::vector<double> expected(double p) {
   const double a = std::asin(p);
@@ -68,7 +68,7 @@ TEST(SolveAllOperator, InclusionOverAParameterBox) {
 }
 
 TEST(SolveAllOperator, BadInputIsNamed) {
-  EXPECT_THROW(solve_all(eq(x(0), x(1)), kUnknown, {Interval(0, 1)}, 1e-9, 0), std::invalid_argument);
+  EXPECT_THROW(solve_all_operator(eq(x(0), x(1)), kUnknown, {Interval(0, 1)}, 1e-9, 0), std::invalid_argument);
 }
 
 }  // namespace

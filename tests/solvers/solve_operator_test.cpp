@@ -23,7 +23,7 @@ double at(const Fn& f, std::vector<double> coords, std::size_t j = 0) { return e
 // x0 in [0, 2] with x0^2 + x1^2 = 1: sqrt(1 - x1^2).
 Fn circle_solve(double epsilon = 1e-9) {
   const int unknowns[] = {0};
-  return solve(eq(square(x(0)) + square(x(1)), 1.0), unknowns, {Interval(0.0, 2.0)}, epsilon);
+  return solve_operator(eq(square(x(0)) + square(x(1)), 1.0), unknowns, {Interval(0.0, 2.0)}, epsilon);
 }
 
 // Intersection of the unit circle with the circle of radius x3 around (x2, 0), upper half:
@@ -31,7 +31,7 @@ Fn circle_solve(double epsilon = 1e-9) {
 Fn two_circles() {
   const int unknowns[] = {0, 1};
   const Fn c = eq(square(x(0)) + square(x(1)), 1.0) && eq(square(x(0) - x(2)) + square(x(1)), square(x(3)));
-  return solve(c, unknowns, {Interval(-2.0, 2.0), Interval(0.0, 2.0)}, 1e-9);
+  return solve_operator(c, unknowns, {Interval(-2.0, 2.0), Interval(0.0, 2.0)}, 1e-9);
 }
 
 TEST(SolveOperator, PointValues) {
@@ -138,10 +138,10 @@ TEST(SolveOperator, NoSolutionIsAnError) {
 TEST(SolveOperator, NestedSolve) {
   const Fn inner = circle_solve(1e-11);
   const int outer_unknown[] = {1};
-  const Fn outer0 = solve(eq(inner, 0.6), outer_unknown, {Interval(0.0, 0.99)}, 1e-9);
+  const Fn outer0 = solve_operator(eq(inner, 0.6), outer_unknown, {Interval(0.0, 0.99)}, 1e-9);
   EXPECT_TRUE(outer0.inputs().empty());
   EXPECT_NEAR(at(outer0, {}), 0.8, 1e-9);
-  const Fn outer = solve(eq(inner, x(2)), outer_unknown, {Interval(0.0, 0.99)}, 1e-9);
+  const Fn outer = solve_operator(eq(inner, x(2)), outer_unknown, {Interval(0.0, 0.99)}, 1e-9);
   EXPECT_EQ(outer.inputs(), std::vector<int>{2});
   const Fn d = derivative(outer, 2);
   const Tape tape(outer);
@@ -159,7 +159,7 @@ TEST(SolveOperator, InverseInsideSolve) {
   const Fn t = x(0);
   const Fn inv = compose(inverse(t * t * t + t, x(1), 0), 1, x(0));  // a function of x0
   const int unknowns[] = {0};
-  const Fn s = solve(eq(inv, x(2)), unknowns, {Interval(0.0, 2.0)}, 1e-9);
+  const Fn s = solve_operator(eq(inv, x(2)), unknowns, {Interval(0.0, 2.0)}, 1e-9);
   const Fn d = derivative(s, 2);
   for (double v : {0.2, 0.5, 0.8}) {
     EXPECT_NEAR(at(s, {0, 0, v}), v * v * v + v, 1e-9);
@@ -196,7 +196,7 @@ TEST(SolveOperator, ThroughTapesAndAllEvaluators) {
 TEST(SolveOperator, NonSquareSystemHasNaNDerivative) {
   const int unknowns[] = {0};
   // An inequality pair is not an equality system: values work, the derivative is NaN.
-  const Fn r = solve(x(0) >= x(1) && x(0) <= x(1), unknowns, {Interval(0.0, 1.0)}, 1e-9);
+  const Fn r = solve_operator(x(0) >= x(1) && x(0) <= x(1), unknowns, {Interval(0.0, 1.0)}, 1e-9);
   EXPECT_NEAR(at(r, {0.0, 0.4}), 0.4, 1e-8);
   EXPECT_TRUE(std::isnan(at(derivative(r, 1), {0.0, 0.4})));
 }
@@ -206,17 +206,17 @@ TEST(SolveOperator, BadInputThrows) {
   const int one[] = {0};
   const int twice[] = {0, 0};
   const int out_of_range[] = {64};
-  EXPECT_THROW(solve(cat({c, c}), one, {Interval(0, 1)}, 1e-6), std::invalid_argument);
-  EXPECT_THROW(solve(c, std::span<const int>{}, {}, 1e-6), std::invalid_argument);
-  EXPECT_THROW(solve(c, twice, {Interval(0, 1), Interval(0, 1)}, 1e-6), std::invalid_argument);
-  EXPECT_THROW(solve(c, out_of_range, {Interval(0, 1)}, 1e-6), std::invalid_argument);
-  EXPECT_THROW(solve(c, one, {Interval(0, 1), Interval(0, 1)}, 1e-6), std::invalid_argument);
-  EXPECT_THROW(solve(c, one, {Interval::empty()}, 1e-6), std::invalid_argument);
-  EXPECT_THROW(solve(c, one, {Interval::entire()}, 1e-6), std::invalid_argument);
-  EXPECT_THROW(solve(c, one, {Interval(0, 1)}, 0.0), std::invalid_argument);
-  EXPECT_THROW(solve(c, one, {Interval(0, 1)}, -1.0), std::invalid_argument);
+  EXPECT_THROW(solve_operator(cat({c, c}), one, {Interval(0, 1)}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(solve_operator(c, std::span<const int>{}, {}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(solve_operator(c, twice, {Interval(0, 1), Interval(0, 1)}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(solve_operator(c, out_of_range, {Interval(0, 1)}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(solve_operator(c, one, {Interval(0, 1), Interval(0, 1)}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(solve_operator(c, one, {Interval::empty()}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(solve_operator(c, one, {Interval::entire()}, 1e-6), std::invalid_argument);
+  EXPECT_THROW(solve_operator(c, one, {Interval(0, 1)}, 0.0), std::invalid_argument);
+  EXPECT_THROW(solve_operator(c, one, {Interval(0, 1)}, -1.0), std::invalid_argument);
   try {
-    solve(c, one, {Interval(0, 1)}, 0.0);
+    solve_operator(c, one, {Interval(0, 1)}, 0.0);
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("epsilon"), std::string::npos) << e.what();
   }

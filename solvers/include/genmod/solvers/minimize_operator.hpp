@@ -1,17 +1,19 @@
 // GENMOD's m_minimize (snyder.md section 2.4.13) as Fn operators: the global minimizer point
 // and the minimum value of an objective over the unknowns, as functions of the remaining (free)
-// coordinates.
+// coordinates. The operators are named *_operator; genmod::minimize() (minimizer.hpp) is the
+// search itself, which returns boxes and a bracket.
 //
 // Example:
 //   using namespace genmod;
 //   const int unknowns[] = {0};
 //   Fn f = square(x(0) - x(1)) + square(x(1));            // min over x0 is x1^2, at x0 = x1
-//   Fn v = minimum_value(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-8);   // a function of x1
-//   Fn m = minimize(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-8);        // ~ x1
+//   Fn v = minimum_value_operator(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-8);  // a function of x1
+//   Fn m = minimize_operator(f, Fn(1.0), unknowns, {Interval(-2, 2)}, 1e-8);       // ~ x1
 //
 // Point evaluation at free values p: genmod::minimize() over the unknowns and the free
 // coordinates together, the free sides degenerate ([p, p], never split), with options epsilon
-// and delta = epsilon. minimum_value = the midpoint of the guaranteed bracket; minimize = the
+// and delta = epsilon. minimum_value_operator = the midpoint of the guaranteed bracket;
+// minimize_operator = the
 // verified feasible best_point (within about epsilon of a minimizer, not refined). NaN when
 // the problem is infeasible, no point was verified feasible (equality constraints: see
 // minimizer.hpp) or the bracket is wider than delta (a limit stopped the search).
@@ -50,19 +52,19 @@ namespace genmod {
 // problem for: a non-scalar objective or constraint, no unknowns, an unknown repeated or out of
 // range, a domain of the wrong dimension or with an empty, NaN or unbounded side, an epsilon
 // that is not finite and > 0.
-Fn minimize(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+Fn minimize_operator(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
             double epsilon);
 
 // GENMOD's "all solutions up to a maximum" form: 1 + K n components (K = max_solutions >= 1):
 // the number of global minimizers found (at most K; minimizers closer than about epsilon count
 // as one), then K minimizer points in lexicographic order (NaN where fewer). Inclusions: every
 // slot holds the hull of all near-minimal feasible points, and the count is [0, K] with
-// kMaybeError (the minimizer does not certify counts). Derivatives per slot as for minimize().
-Fn minimize_all(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+// kMaybeError (the minimizer does not certify counts). Derivatives per slot as for minimize_operator().
+Fn minimize_all_operator(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
                 double epsilon, int max_solutions);
 
-// The minimum value (scalar); same arguments and errors as minimize().
-Fn minimum_value(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+// The minimum value (scalar); same arguments and errors as minimize_operator().
+Fn minimum_value_operator(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
                  double epsilon);
 
 }  // namespace genmod

@@ -1,12 +1,13 @@
 // GENMOD's m_solve (snyder.md section 2.4.13) as an Fn operator: the constraint solved for some
 // coordinates, as a function of the others. Point evaluation, an inclusion function over boxes
 // of the free coordinates and an implicit-function-theorem derivative, so a solve can be nested
-// inside a function that is itself solved, minimized or tessellated.
+// inside a function that is itself solved, minimized or tessellated. The operators are named
+// *_operator; genmod::solve() (constraint_solver.hpp) is the search itself, which returns boxes.
 //
 // Example:
 //   using namespace genmod;
 //   const int unknowns[] = {0};
-//   Fn r = solve(eq(square(x(0)) + square(x(1)), 1.0), unknowns, {Interval(0, 2)}, 1e-9);
+//   Fn r = solve_operator(eq(square(x(0)) + square(x(1)), 1.0), unknowns, {Interval(0, 2)}, 1e-9);
 //   // r(x1) = sqrt(1 - x1^2);  derivative(r, 1) = -x1 / sqrt(1 - x1^2)
 //
 // The result has dimension n = unknowns.size(): component k is x(unknowns[k]) of a solution
@@ -31,11 +32,11 @@
 // solution for every parameter value) and the search was complete; otherwise kMaybeError.
 // Unbounded arguments give the domain and kMaybeError.
 //
-// Continuity (CustomOp::inclusion_continuous), claimed on a box P only for solve() (one
+// Continuity (CustomOp::inclusion_continuous), claimed on a box P only for solve_operator() (one
 // solution), a complete search and a single component certified (Krawczyk) to hold exactly one
 // solution for every p in P: then the solution map is continuous on P, so interval Newton and
 // Krawczyk go through a nested solve. With several solutions the first one may jump to
-// another; solve_all's count is a step function: no claim.
+// another; solve_all_operator's count is a step function: no claim.
 //
 // Derivative (implicit function theorem, snyder.md section 3.3): when the top-level
 // conjunction of the constraint holds exactly n equalities h_i = 0 (inequalities are assumed
@@ -57,17 +58,17 @@ namespace genmod {
 // Throws std::invalid_argument naming the problem for: a non-scalar constraint, no unknowns, an
 // unknown repeated or outside [0, kMaxInputs), a domain of the wrong dimension or with an empty,
 // NaN or unbounded side, an epsilon that is not finite and > 0.
-Fn solve(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon);
+Fn solve_operator(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon);
 
 // GENMOD's "all solutions up to a maximum": 1 + K n components (K = max_solutions >= 1):
 // the number of solutions found (at most K), then K solution points in the order above (NaN
-// where fewer were found). Point values as for solve(); each solution is a separate solution
+// where fewer were found). Point values as for solve_operator(); each solution is a separate solution
 // component of the aggregation, so two solutions closer than about epsilon count as one.
 // Inclusion over a parameter box: the count is [number of components certified unique, K] (or
 // the exact number when every component is certified), and every slot holds the hull of all
 // solutions (any of them may come j-th for some parameter value), kMaybeError beyond the
 // certified count. Derivatives: the implicit function theorem at each slot (0 for the count).
-Fn solve_all(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon,
-             int max_solutions);
+Fn solve_all_operator(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon,
+                        int max_solutions);
 
 }  // namespace genmod
