@@ -253,7 +253,7 @@ Fn compose(const Fn& f, int i, const Fn& g) {
   return Fn(std::move(out));
 }
 
-Fn compose_all(const Fn& f, std::span<const int> inputs, const Fn& g) {
+Fn compose_all(const Fn& f, Coordinates inputs, const Fn& g) {
   if (inputs.size() != g.dim())
     throw std::invalid_argument("genmod: compose_all: " + std::to_string(inputs.size()) +
                                 " coordinates but the substituted function has dimension " + std::to_string(g.dim()));

@@ -16,7 +16,7 @@ Fn jacobian(const Fn& f, std::span<const int> inputs) {
 
 InclusionFunction::InclusionFunction(const Fn& f) : InclusionFunction(f, f.inputs()) {}
 
-InclusionFunction::InclusionFunction(const Fn& f, std::span<const int> inputs)
+InclusionFunction::InclusionFunction(const Fn& f, Coordinates inputs)
     : f_(f, inputs), jacobian_(inputs.empty() ? Fn(0.0) : jacobian(f, inputs), inputs) {}
 
 std::vector<Interval> InclusionFunction::eval(std::span<const Interval> box, unsigned forms,

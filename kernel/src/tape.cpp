@@ -328,7 +328,7 @@ std::shared_ptr<Tape::Data> compile(const Fn& f, std::span<const int> inputs) {
 }  // namespace
 
 Tape::Tape(const Fn& f) : data_(compile(f, f.inputs())) {}
-Tape::Tape(const Fn& f, std::span<const int> inputs) : data_(compile(f, inputs)) {}
+Tape::Tape(const Fn& f, Coordinates inputs) : data_(compile(f, inputs)) {}
 
 std::span<const Clause> Tape::clauses() const noexcept { return data_->reg; }
 std::span<const std::uint32_t> Tape::output_registers() const noexcept { return data_->reg_outputs; }

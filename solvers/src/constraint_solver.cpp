@@ -366,7 +366,7 @@ void build_components(const Problem& p, const Box& search, SolveResult& r) {
 
 }  // namespace
 
-SolveResult solve(const Fn& constraint, std::span<const int> unknowns, const Box& box, const SolveOptions& options,
+SolveResult solve(const Fn& constraint, Coordinates unknowns, const Box& box, const SolveOptions& options,
                   const FreeParameters& parameters) {
   const LimitWatch watch(options.limits);
   validate(box, unknowns, options, parameters);

@@ -68,8 +68,8 @@ Truth t_not(Truth a) {
 
 }  // namespace
 
-ConstraintSystem::ConstraintSystem(const Fn& constraint, std::span<const int> unknowns,
-                                   std::span<const int> parameters) {
+ConstraintSystem::ConstraintSystem(const Fn& constraint, Coordinates unknowns,
+                                   Coordinates parameters) {
   if (constraint.dim() != 1)
     throw std::invalid_argument("genmod: solve: the constraint must be scalar (0/1 valued), got dimension " +
                                 std::to_string(constraint.dim()));

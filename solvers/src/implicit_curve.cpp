@@ -528,7 +528,7 @@ void CurveBuilder::assemble() {
 
 }  // namespace
 
-ImplicitCurve approximate_implicit_curve(const Fn& F, std::span<const int> coords, const Box& X,
+ImplicitCurve approximate_implicit_curve(const Fn& F, Coordinates coords, const Box& X,
                                          const ImplicitCurveOptions& options) {
   const std::string who = "approximate_implicit_curve";
   const std::size_t n = coords.size();

@@ -113,7 +113,7 @@ bool jacobian_minor_regular(std::span<const Interval> jacobian, std::size_t m, s
   return m > 1 && preconditioned_dominant(a, m);
 }
 
-std::vector<int> parameterizable_coordinates(const Fn& F, std::span<const int> coords, const Box& box) {
+std::vector<int> parameterizable_coordinates(const Fn& F, Coordinates coords, const Box& box) {
   const std::size_t n = coords.size();
   if (n < 2 || F.dim() != n - 1)
     throw std::invalid_argument("genmod: parameterizable_coordinates: F must have coords.size() - 1 components");

@@ -44,7 +44,7 @@ Interval hull_of(const Interval& a, const Interval& b) {
 
 }  // namespace
 
-IntervalNewton::IntervalNewton(const Fn& system, std::span<const int> unknowns, std::span<const int> parameters)
+IntervalNewton::IntervalNewton(const Fn& system, Coordinates unknowns, Coordinates parameters)
     : n_(unknowns.size()),
       inputs_(unknowns.size() + parameters.size()),
       f_([&] {

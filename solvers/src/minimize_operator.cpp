@@ -242,7 +242,7 @@ Fn make(const Fn& objective, const Fn& constraint, std::span<const int> unknowns
 
 }  // namespace
 
-Fn minimize_operator(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+Fn minimize_operator(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& domain,
             double epsilon) {
   const Fn all = make(objective, constraint, unknowns, domain, epsilon, 0);
   std::vector<Fn> point;
@@ -250,12 +250,12 @@ Fn minimize_operator(const Fn& objective, const Fn& constraint, std::span<const 
   return cat(point);
 }
 
-Fn minimum_value_operator(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+Fn minimum_value_operator(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& domain,
                  double epsilon) {
   return make(objective, constraint, unknowns, domain, epsilon, 0)[unknowns.size()];
 }
 
-Fn minimize_all_operator(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+Fn minimize_all_operator(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& domain,
                 double epsilon, int max_solutions) {
   if (max_solutions < 1) throw std::invalid_argument("genmod: minimize_all: max_solutions must be >= 1");
   const Fn all = make(objective, constraint, unknowns, domain, epsilon, max_solutions);

@@ -530,19 +530,19 @@ MinimizeResult Search::run() {
 
 }  // namespace
 
-MinimizeResult minimize(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& box,
+MinimizeResult minimize(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& box,
                         const MinimizeOptions& options) {
   validate(objective, constraint, unknowns, box, options);
   return Search(objective, constraint, unknowns, box, options, false).run();
 }
 
-MinimizeResult minimize_value(const Fn& objective, const Fn& constraint, std::span<const int> unknowns,
+MinimizeResult minimize_value(const Fn& objective, const Fn& constraint, Coordinates unknowns,
                               const Box& box, const MinimizeOptions& options) {
   validate(objective, constraint, unknowns, box, options);
   return Search(objective, constraint, unknowns, box, options, true).run();
 }
 
-Interval minimum_value(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& box,
+Interval minimum_value(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& box,
                        const MinimizeOptions& options) {
   return minimize_value(objective, constraint, unknowns, box, options).minimum;
 }

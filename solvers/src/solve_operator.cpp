@@ -292,13 +292,13 @@ Fn apply_to_free(const std::shared_ptr<const SolveOp>& op, const std::vector<int
 
 }  // namespace
 
-Fn solve_operator(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon) {
+Fn solve_operator(const Fn& constraint, Coordinates unknowns, const Box& domain, double epsilon) {
   std::vector<int> free;
   const auto op = make_solve_op(constraint, unknowns, domain, epsilon, 0, &free);
   return apply_to_free(op, free);
 }
 
-Fn solve_all_operator(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon, int max_solutions) {
+Fn solve_all_operator(const Fn& constraint, Coordinates unknowns, const Box& domain, double epsilon, int max_solutions) {
   if (max_solutions < 1) throw std::invalid_argument("genmod: solve_all: max_solutions must be >= 1");
   std::vector<int> free;
   const auto op = make_solve_op(constraint, unknowns, domain, epsilon, max_solutions, &free);

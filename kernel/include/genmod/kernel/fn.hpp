@@ -13,6 +13,7 @@
 //   Fn inside = length(p) < 1.0;        // 0/1 valued
 #pragma once
 
+#include "genmod/kernel/coordinates.hpp"
 #include "genmod/kernel/dag.hpp"
 
 #include <concepts>
@@ -138,6 +139,6 @@ Fn derivative(const Fn& f, int i);
 // GENMOD's m_eval: f with x(i) replaced by the scalar function g.
 Fn compose(const Fn& f, int i, const Fn& g);
 // GENMOD's m_eval_all: f with x(inputs[k]) replaced by component k of g, all at once.
-Fn compose_all(const Fn& f, std::span<const int> inputs, const Fn& g);
+Fn compose_all(const Fn& f, Coordinates inputs, const Fn& g);
 
 }  // namespace genmod

@@ -8,6 +8,7 @@
 //    intersection is one too, and never wider than any of them).
 #pragma once
 
+#include "genmod/kernel/coordinates.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
 
@@ -27,7 +28,7 @@ class InclusionFunction {
  public:
   // Compiles f and its symbolic Jacobian, with inputs in the order of f.inputs() or `inputs`.
   explicit InclusionFunction(const Fn& f);
-  InclusionFunction(const Fn& f, std::span<const int> inputs);
+  InclusionFunction(const Fn& f, Coordinates inputs);
 
   // Encloses each component of f over `box`, intersecting the chosen forms (the natural
   // extension is always computed). Forms that do not apply (discontinuity, possible error,

@@ -30,5 +30,8 @@ class PointEvaluator {
 
 // Evaluates f at a point given as values of x(0), x(1), ... (convenience, compiles a tape).
 std::vector<double> evaluate(const Fn& f, std::span<const double> coordinates);
+inline std::vector<double> evaluate(const Fn& f, std::initializer_list<double> coordinates) {
+  return evaluate(f, std::span<const double>(coordinates.begin(), coordinates.size()));
+}
 
 }  // namespace genmod

@@ -11,6 +11,7 @@
 // tape that equals this one at every point of that box (and of any box inside it).
 #pragma once
 
+#include "genmod/kernel/coordinates.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/opcode.hpp"
 
@@ -57,7 +58,7 @@ class Tape {
   explicit Tape(const Fn& f);
   // Compiles f with an explicit input order: input k is x(inputs[k]). Every coordinate f
   // depends on must be listed (std::invalid_argument names a missing one).
-  Tape(const Fn& f, std::span<const int> inputs);
+  Tape(const Fn& f, Coordinates inputs);
 
   // Register form.
   std::span<const Clause> clauses() const noexcept;

@@ -31,6 +31,7 @@
 // search.
 #pragma once
 
+#include "genmod/kernel/coordinates.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/interval.hpp"
 #include "genmod/solvers/aggregation.hpp"
@@ -146,7 +147,7 @@ struct SolveResult {
 // scalar or depends on a coordinate that is neither an unknown nor a parameter; an unknown or
 // parameter listed twice; parameters whose values do not match their coordinates. An
 // unsatisfiable constraint returns no boxes (and complete()).
-SolveResult solve(const Fn& constraint, std::span<const int> unknowns, const Box& box,
+SolveResult solve(const Fn& constraint, Coordinates unknowns, const Box& box,
                   const SolveOptions& options = {}, const FreeParameters& parameters = {});
 
 // The split of one box (section 4.8), exposed for tests: Cyclic splits dimension

@@ -24,6 +24,7 @@
 // keeps the box from being reported as wholly feasible.
 #pragma once
 
+#include "genmod/kernel/coordinates.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/interval.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
@@ -72,7 +73,7 @@ class ConstraintSystem {
   // Throws std::invalid_argument if the constraint is not scalar, if an unknown or parameter
   // is listed twice or out of range, or if the constraint depends on a coordinate that is
   // neither an unknown nor a parameter (the message names the coordinate).
-  ConstraintSystem(const Fn& constraint, std::span<const int> unknowns, std::span<const int> parameters = {});
+  ConstraintSystem(const Fn& constraint, Coordinates unknowns, Coordinates parameters = {});
 
   std::size_t num_unknowns() const noexcept { return num_unknowns_; }
   std::size_t num_parameters() const noexcept { return inputs_.size() - num_unknowns_; }

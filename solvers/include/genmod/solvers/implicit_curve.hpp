@@ -49,6 +49,7 @@
 // Thread safety: each call compiles its own tapes; calls may run concurrently.
 #pragma once
 
+#include "genmod/kernel/coordinates.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/interval.hpp"
 #include "genmod/solvers/box.hpp"
@@ -152,7 +153,7 @@ struct ImplicitCurve {
 // the problem: a wrong dimension of F or X, an empty / unbounded / NaN side, F depending on a
 // coordinate outside `coords`, a coordinate listed twice, a periodic coordinate not in
 // `coords`, acceptance_width / point_epsilon not > 0, min_width < 0.
-ImplicitCurve approximate_implicit_curve(const Fn& F, std::span<const int> coords, const Box& X,
+ImplicitCurve approximate_implicit_curve(const Fn& F, Coordinates coords, const Box& X,
                                          const ImplicitCurveOptions& options = {});
 
 // --- The parameterizability test (Theorem 5.5), exposed for tests and other algorithms. ---
@@ -165,6 +166,6 @@ Interval jacobian_minor_determinant(std::span<const Interval> jacobian, std::siz
 bool jacobian_minor_regular(std::span<const Interval> jacobian, std::size_t m, std::size_t skip);
 // The coordinates k (indices into coords) in which the curve F = 0 is globally parameterizable
 // over `box` by Theorem 5.5 (at most one curve point on every slice x_k = c of the box).
-std::vector<int> parameterizable_coordinates(const Fn& F, std::span<const int> coords, const Box& box);
+std::vector<int> parameterizable_coordinates(const Fn& F, Coordinates coords, const Box& box);
 
 }  // namespace genmod

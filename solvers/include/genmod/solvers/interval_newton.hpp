@@ -24,6 +24,7 @@
 //   newton.contract(X);         // X shrinks around it
 #pragma once
 
+#include "genmod/kernel/coordinates.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/interval.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
@@ -47,7 +48,7 @@ class IntervalNewton {
   // `system` has n = unknowns.size() components. Inputs of the boxes passed below are the
   // unknowns, then the parameters. Throws std::invalid_argument when the system is not square
   // or depends on a coordinate that is neither an unknown nor a parameter.
-  IntervalNewton(const Fn& system, std::span<const int> unknowns, std::span<const int> parameters = {});
+  IntervalNewton(const Fn& system, Coordinates unknowns, Coordinates parameters = {});
 
   std::size_t dim() const noexcept { return n_; }
 

@@ -41,6 +41,7 @@
 // NaN for larger n or a singular Hessian).
 #pragma once
 
+#include "genmod/kernel/coordinates.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/solvers/box.hpp"
 
@@ -52,7 +53,7 @@ namespace genmod {
 // problem for: a non-scalar objective or constraint, no unknowns, an unknown repeated or out of
 // range, a domain of the wrong dimension or with an empty, NaN or unbounded side, an epsilon
 // that is not finite and > 0.
-Fn minimize_operator(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+Fn minimize_operator(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& domain,
             double epsilon);
 
 // GENMOD's "all solutions up to a maximum" form: 1 + K n components (K = max_solutions >= 1):
@@ -60,11 +61,11 @@ Fn minimize_operator(const Fn& objective, const Fn& constraint, std::span<const 
 // as one), then K minimizer points in lexicographic order (NaN where fewer). Inclusions: every
 // slot holds the hull of all near-minimal feasible points, and the count is [0, K] with
 // kMaybeError (the minimizer does not certify counts). Derivatives per slot as for minimize_operator().
-Fn minimize_all_operator(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+Fn minimize_all_operator(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& domain,
                 double epsilon, int max_solutions);
 
 // The minimum value (scalar); same arguments and errors as minimize_operator().
-Fn minimum_value_operator(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& domain,
+Fn minimum_value_operator(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& domain,
                  double epsilon);
 
 }  // namespace genmod

@@ -68,6 +68,7 @@
 // the search box Y is discarded, otherwise Y is reduced to it.
 #pragma once
 
+#include "genmod/kernel/coordinates.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/inclusion.hpp"
 #include "genmod/kernel/interval.hpp"
@@ -142,7 +143,7 @@ struct MinimizeResult {
 // or constraint, a dependency on a coordinate that is not an unknown, repeated or out of range
 // unknowns, a box of the wrong dimension or with an empty / unbounded / NaN side,
 // epsilon or delta not finite and > 0, a negative or NaN equality_tolerance.
-MinimizeResult minimize(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& box,
+MinimizeResult minimize(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& box,
                         const MinimizeOptions& options = {});
 
 // The "minimum value" variant (snyder.md section 2.4.13): the guaranteed bracket only. Stops as
@@ -150,11 +151,11 @@ MinimizeResult minimize(const Fn& objective, const Fn& constraint, std::span<con
 // several minimizers it bounds the value better than evaluating at one approximate minimizer.
 // If a limit stops it first, the bracket returned is still guaranteed but may be wider than
 // delta; minimize_value() gives the same computation with the full report.
-Interval minimum_value(const Fn& objective, const Fn& constraint, std::span<const int> unknowns, const Box& box,
+Interval minimum_value(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& box,
                        const MinimizeOptions& options = {});
 
 // minimum_value() with the full result (candidates are the boxes still open when it stopped).
-MinimizeResult minimize_value(const Fn& objective, const Fn& constraint, std::span<const int> unknowns,
+MinimizeResult minimize_value(const Fn& objective, const Fn& constraint, Coordinates unknowns,
                               const Box& box, const MinimizeOptions& options = {});
 
 // The constraint with every equality reachable through and / or relaxed to |a - b| <= eta

@@ -48,6 +48,7 @@
 // Restriction: the domain is a constant box (GENMOD allows a parametric domain).
 #pragma once
 
+#include "genmod/kernel/coordinates.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/solvers/box.hpp"
 
@@ -58,7 +59,7 @@ namespace genmod {
 // Throws std::invalid_argument naming the problem for: a non-scalar constraint, no unknowns, an
 // unknown repeated or outside [0, kMaxInputs), a domain of the wrong dimension or with an empty,
 // NaN or unbounded side, an epsilon that is not finite and > 0.
-Fn solve_operator(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon);
+Fn solve_operator(const Fn& constraint, Coordinates unknowns, const Box& domain, double epsilon);
 
 // GENMOD's "all solutions up to a maximum": 1 + K n components (K = max_solutions >= 1):
 // the number of solutions found (at most K), then K solution points in the order above (NaN
@@ -68,7 +69,7 @@ Fn solve_operator(const Fn& constraint, std::span<const int> unknowns, const Box
 // the exact number when every component is certified), and every slot holds the hull of all
 // solutions (any of them may come j-th for some parameter value), kMaybeError beyond the
 // certified count. Derivatives: the implicit function theorem at each slot (0 for the count).
-Fn solve_all_operator(const Fn& constraint, std::span<const int> unknowns, const Box& domain, double epsilon,
+Fn solve_all_operator(const Fn& constraint, Coordinates unknowns, const Box& domain, double epsilon,
                         int max_solutions);
 
 }  // namespace genmod
