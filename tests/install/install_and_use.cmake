@@ -11,8 +11,32 @@ endfunction()
 # Start clean so that a stale prefix or example build cannot hide a packaging error.
 file(REMOVE_RECURSE ${PREFIX} ${EXAMPLE_BUILD_DIR})
 
+# Install into a staging prefix and move it: the example then uses a package that was not
+# written for the place it is in, so any absolute path into the install tree would break it.
+set(staging ${PREFIX}-staging)
+file(REMOVE_RECURSE ${staging})
 run_step("cmake --install"
-  ${CMAKE_COMMAND} --install ${GENMOD_BUILD_DIR} --prefix ${PREFIX} --config ${CONFIG})
+  ${CMAKE_COMMAND} --install ${GENMOD_BUILD_DIR} --prefix ${staging} --config ${CONFIG})
+file(RENAME ${staging} ${PREFIX})
+
+# Relocatable: the exported targets name their dependencies by imported target
+# (OpenMeshCore, TBB::tbb, ...), never by a library file's absolute path.
+file(GLOB target_files ${PREFIX}/lib*/cmake/genmod/genmodTargets*.cmake)
+if(NOT target_files)
+  message(FATAL_ERROR "install test: no genmodTargets*.cmake under ${PREFIX}")
+endif()
+foreach(target_file IN LISTS target_files)
+  file(STRINGS ${target_file} link_lines REGEX "INTERFACE_LINK_LIBRARIES")
+  foreach(line IN LISTS link_lines)
+    if(line MATCHES "\"/|;/|\\.so|\\.a[;\"]")
+      message(FATAL_ERROR "install test: ${target_file} links a library by its path, not by a target: ${line}")
+    endif()
+  endforeach()
+  file(STRINGS ${target_file} staged REGEX "${staging}")
+  if(staged)
+    message(FATAL_ERROR "install test: ${target_file} names the staging prefix ${staging}: ${staged}")
+  endif()
+endforeach()
 
 run_step("configuring the example"
   ${CMAKE_COMMAND} -S ${EXAMPLE_SOURCE_DIR} -B ${EXAMPLE_BUILD_DIR} -G ${GENERATOR}
