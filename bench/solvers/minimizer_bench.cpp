@@ -36,7 +36,7 @@ void BM_StandardFunction(benchmark::State& state) {
   state.counters["delta"] = p.delta;
 }
 BENCHMARK(BM_StandardFunction)
-    ->ArgsProduct({{0, 1, 2, 3, 4, 5}, {0, 1}})
+    ->ArgsProduct({{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1}})
     ->Unit(benchmark::kMillisecond);
 
 // Claim 21's constrained example, with and without the monotonicity test and local search.
