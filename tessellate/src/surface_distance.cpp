@@ -10,8 +10,10 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace genmod::validation {
 namespace {
@@ -31,7 +33,8 @@ struct Evaluators {
 // `search_radius`, bisected once found; < 0 when there is none.
 double sign_change_along(const Tape& tape, PointEvaluator& point, const std::array<double, 3>& p, double f,
                          const double dir[3], double estimate, double search_radius) {
-  static constexpr double kFactors[] = {1.0 + 1e-9, 1.0 + 1e-6, 1.001, 1.01, 1.1, 1.5, 2.0, 3.0, 5.0, 8.0, 13.0};
+  static constexpr double kFactors[] = {1.0 + 1e-9, 1.0 + 1e-6, 1.001, 1.01, 1.05, 1.1, 1.2, 1.35, 1.5, 1.75,
+                                        2.0,         2.5,         3.0,   4.0,  5.0,  6.5, 8.0, 10.0, 13.0};
   auto flips = [&](double t) {
     const double q[3] = {p[0] + t * dir[0], p[1] + t * dir[1], p[2] + t * dir[2]};
     const double fq = point.eval(tape, q)[0];
@@ -58,9 +61,22 @@ double sign_change_along(const Tape& tape, PointEvaluator& point, const std::arr
   return -1.0;
 }
 
+// The 26 directions of the lattice (axes, face and body diagonals), unit length.
+const std::vector<std::array<double, 3>> kLatticeDirections = [] {
+  std::vector<std::array<double, 3>> d;
+  for (int a = -1; a <= 1; ++a)
+    for (int b = -1; b <= 1; ++b)
+      for (int c = -1; c <= 1; ++c) {
+        const double len = std::sqrt(double(a * a + b * b + c * c));
+        if (len > 0) d.push_back({a / len, b / len, c / len});
+      }
+  return d;
+}();
+
 // Looks for a sign change of f from p along the descent direction; where that finds none, or
-// one much farther than the first-order estimate (near a kink of f the gradient can point
-// away from the nearest surface), also along the six axis directions, keeping the nearest.
+// one farther than the first-order estimate (near a kink of f the gradient can point away
+// from the nearest surface, and across a crease the nearest surface point is off the
+// gradient), also along the 26 lattice directions, keeping the nearest.
 Result distance_at(const Tape& tape, Evaluators& ev, const std::array<double, 3>& p, double search_radius) {
   Result r;
   ev.gradient.eval(tape, p);
@@ -79,15 +95,12 @@ Result distance_at(const Tape& tape, Evaluators& ev, const std::array<double, 3>
   const double s = f > 0 ? -1.0 / gn : 1.0 / gn;
   const double descent[3] = {s * g[0], s * g[1], s * g[2]};
   r.bound = sign_change_along(tape, ev.point, p, f, descent, r.estimate, search_radius);
-  if (r.bound >= 0 && r.bound <= 2 * r.estimate) return r;
-  for (int axis = 0; axis < 3; ++axis)
-    for (double sign : {-1.0, 1.0}) {
-      double dir[3] = {0, 0, 0};
-      dir[axis] = sign;
-      const double radius = r.bound >= 0 ? std::min(search_radius, r.bound) : search_radius;
-      const double b = sign_change_along(tape, ev.point, p, f, dir, std::min(r.estimate, radius), radius);
-      if (b >= 0 && (r.bound < 0 || b < r.bound)) r.bound = b;
-    }
+  if (r.bound >= 0 && r.bound <= 1.01 * r.estimate) return r;
+  for (const auto& dir : kLatticeDirections) {
+    const double radius = r.bound >= 0 ? std::min(search_radius, r.bound) : search_radius;
+    const double b = sign_change_along(tape, ev.point, p, f, dir.data(), std::min(r.estimate, radius), radius);
+    if (b >= 0 && (r.bound < 0 || b < r.bound)) r.bound = b;
+  }
   return r;
 }
 
@@ -107,10 +120,10 @@ std::array<double, 3> sample_weights(int k) {
 struct Accumulator {
   double max_vertex_bound = 0, max_vertex_estimate = 0, max_face_bound = 0, max_face_estimate = 0;
   double sum_face_estimate = 0;
-  std::size_t face_points = 0, uncertified = 0;
+  std::size_t face_points = 0, uncertified = 0, uncertified_vertices = 0;
 
   void add(const Result& r, bool vertex) {
-    if (r.bound < 0) ++uncertified;
+    if (r.bound < 0) ++(vertex ? uncertified_vertices : uncertified);
     double& bound = vertex ? max_vertex_bound : max_face_bound;
     double& estimate = vertex ? max_vertex_estimate : max_face_estimate;
     if (r.bound > bound) bound = r.bound;
@@ -128,6 +141,7 @@ struct Accumulator {
     sum_face_estimate += o.sum_face_estimate;
     face_points += o.face_points;
     uncertified += o.uncertified;
+    uncertified_vertices += o.uncertified_vertices;
   }
 };
 
@@ -175,7 +189,8 @@ SurfaceDistance measure_surface_distance(const Mesh& mesh, const Tape& surface, 
   d.max_face_bound = acc.max_face_bound;
   d.max_face_estimate = acc.max_face_estimate;
   d.mean_face_estimate = acc.face_points ? acc.sum_face_estimate / static_cast<double>(acc.face_points) : 0.0;
-  d.uncertified = acc.uncertified;
+  d.uncertified = acc.uncertified + acc.uncertified_vertices;
+  d.uncertified_vertices = acc.uncertified_vertices;
   return d;
 }
 

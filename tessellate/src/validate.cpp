@@ -89,7 +89,9 @@ std::string describe(const MeshValidity& v) {
     line(out, "distance to the surface (%zu points): vertices <= %.3g (estimate %.3g), faces <= %.3g (estimate max %.3g, mean %.3g)%s",
          v.surface.points, v.surface.max_vertex_bound, v.surface.max_vertex_estimate, v.surface.max_face_bound,
          v.surface.max_face_estimate, v.surface.mean_face_estimate, v.surface.uncertified ? "" : ", all certified");
-    if (v.surface.uncertified) line(out, "  points without a certified bound: %zu", v.surface.uncertified);
+    if (v.surface.uncertified)
+      line(out, "  points without a certified bound: %zu (%zu vertices)", v.surface.uncertified,
+           v.surface.uncertified_vertices);
   }
   line(out, "valid: %s", yes_no(v.valid()));
   return out;

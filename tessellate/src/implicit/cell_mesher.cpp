@@ -794,6 +794,120 @@ bool CellMesher::certify(const Vec3& start, std::span<const Vec3> normals, Vec3&
   return false;
 }
 
+bool CellMesher::root_in_tetrahedron(const Vec3& start, const Vec3 (&t)[4], Vec3& apex, double& error) {
+  // Rays from `start` (strictly inside t) to 0.99 of the way to each corner stay strictly
+  // inside; the polygon separates corners of both signs, so one of them crosses the surface.
+  // The bracketed root nearest to `start` wins.
+  constexpr int kSamples = 8;
+  std::vector<Vec3> samples;
+  samples.reserve(1 + 4 * kSamples);
+  samples.push_back(start);
+  for (const Vec3& corner : t)
+    for (int i = 1; i <= kSamples; ++i) samples.push_back(lerp(start, corner, 0.99 * i / kSamples));
+  std::vector<double> g;
+  evaluate(samples, g);
+  if (std::isnan(g[0])) return false;
+  if (g[0] == 0.0) {
+    apex = start;
+    error = 0.0;
+    return true;
+  }
+  return nearest_bracketed_root(samples, g, 4, kSamples, apex, error);
+}
+
+bool CellMesher::nearest_bracketed_root(std::span<const Vec3> samples, std::span<const double> g, std::size_t rays,
+                                        int per_ray, Vec3& apex, double& error) {
+  std::vector<Vec3> a, b;
+  std::vector<double> ga, gb;
+  const auto n = static_cast<std::size_t>(per_ray);
+  for (std::size_t r = 0; r < rays; ++r)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t u = i == 0 ? 0 : 1 + r * n + i - 1, v = 1 + r * n + i;
+      if (std::isnan(g[u]) || std::isnan(g[v])) break;
+      if (is_inside(g[u]) == is_inside(g[v])) continue;
+      const bool u_in = is_inside(g[u]);
+      a.push_back(samples[u_in ? u : v]);
+      b.push_back(samples[u_in ? v : u]);
+      ga.push_back(u_in ? g[u] : g[v]);
+      gb.push_back(u_in ? g[v] : g[u]);
+      break;
+    }
+  if (a.empty()) return false;
+  std::vector<double> tr, err;
+  find_roots(a, b, ga, gb, tr, err);
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Vec3 q = lerp(a[i], b[i], tr[i]);
+    const double d = distance(q, samples[0]);
+    if (d < best) {
+      best = d;
+      apex = q;
+      error = err[i];
+    }
+  }
+  return true;
+}
+
+bool CellMesher::nearest_root(const Vec3& start, std::span<const Vec3> normals, Vec3& apex, double& error) {
+  // Rays from `start` along both senses of each normal, of their mean and of the 26 lattice
+  // directions, sampled out to the shrunk cell's boundary; on each ray the first pair of
+  // neighbouring samples with a sign change brackets a root, and the root nearest to `start`
+  // wins. At a crease the gradient of the active piece can lead out of the solid's wedge
+  // (snap() then fails), while some of these rays cross into it near the crease.
+  const double margin = 1e-4 * cell_size_;
+  double lo[3], hi[3];
+  Vec3 x = start;
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = cell_lo_[k] + margin;
+    hi[k] = cell_hi_[k] - margin;
+    x[k] = std::clamp(x[k], lo[k], hi[k]);
+  }
+  std::vector<Vec3> dirs;
+  Vec3 mean{0, 0, 0};
+  auto add = [&](Vec3 d) {
+    const double len = std::sqrt(dot(d, d));
+    if (!(len > 0) || !std::isfinite(len)) return;
+    for (int k = 0; k < 3; ++k) d[k] /= len;
+    dirs.push_back(d);
+    dirs.push_back({-d[0], -d[1], -d[2]});
+  };
+  for (const Vec3& n : normals) {
+    add(n);
+    for (int k = 0; k < 3; ++k) mean[k] += n[k];
+  }
+  add(mean);
+  for (int a = -1; a <= 1; ++a)
+    for (int b = -1; b <= 1; ++b)
+      for (int c = 0; c <= 1; ++c)
+        if (c == 1 || b == 1 || (b == 0 && a == 1)) add({double(a), double(b), double(c)});  // one of each +-pair
+  constexpr int kSamples = 8;
+  std::vector<Vec3> samples;
+  samples.reserve(1 + dirs.size() * kSamples);
+  samples.push_back(x);
+  for (std::size_t r = 0; r < dirs.size(); ++r) {
+    double reach = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 3; ++k) {
+      if (dirs[r][k] > 0) reach = std::min(reach, (hi[k] - x[k]) / dirs[r][k]);
+      if (dirs[r][k] < 0) reach = std::min(reach, (lo[k] - x[k]) / dirs[r][k]);
+    }
+    if (!std::isfinite(reach)) reach = 0.0;
+    for (int i = 1; i <= kSamples; ++i) {
+      Vec3 q;
+      for (int k = 0; k < 3; ++k) q[k] = std::clamp(x[k] + reach * i / kSamples * dirs[r][k], lo[k], hi[k]);
+      samples.push_back(q);
+    }
+  }
+  std::vector<double> g;
+  evaluate(samples, g);
+  if (std::isnan(g[0])) return false;
+  if (g[0] == 0.0) {
+    apex = x;
+    error = 0.0;
+    return true;
+  }
+  return nearest_bracketed_root(samples, g, dirs.size(), kSamples, apex, error);
+}
+
 void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, CellOutput& out) {
   // The apex: the quadric point of the loop's points with normals, or else the loop's
   // centroid, moved onto the surface along the gradient; the first candidate that lands on
@@ -853,9 +967,10 @@ void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, 
   std::vector<Candidate> candidates;
   for (const Start& start : starts) {
     Candidate c{{}, -1.0, false};
-    const bool on_surface = start.in_place ? certify(start.point, nrm, c.point, c.error)
-                                           : snap(start.point, c.point, c.error) ||
-                                                 line_root(start.point, mean, c.point, c.error);
+    const bool on_surface = (start.in_place ? certify(start.point, nrm, c.point, c.error)
+                                            : snap(start.point, c.point, c.error) ||
+                                                  line_root(start.point, mean, c.point, c.error)) ||
+                            nearest_root(start.point, nrm, c.point, c.error);
     if (!on_surface) c.error = -1.0;
     c.folds = folds(c.point);
     if (on_surface && !c.folds) {
@@ -1072,7 +1187,7 @@ void CellMesher::tetrahedra(const Cell& cell, CellOutput& out) {
                                ctx_.frame->point(t[2])};
       Vec3 p = c;
       double error = -1.0;
-      if (!snap_in_tetrahedron(c, corners, p, error)) p = c;
+      if (!snap_in_tetrahedron(c, corners, p, error) && !root_in_tetrahedron(c, corners, p, error)) p = c;
       const std::uint32_t apex = vertex(out, {VertexKind::TetApex, t[0], t[1], t[2]}, p, error);
       for (std::size_t k = 0; k < polygon.size(); ++k)
         out.triangles.push_back({apex, polygon[k], polygon[(k + 1) % polygon.size()]});

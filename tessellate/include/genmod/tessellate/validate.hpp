@@ -37,10 +37,10 @@ namespace genmod {
 // |f(v)| / |grad f(v)|. The bound is certified by a sign change: genmod looks for a point q
 // on the ray from v along -sign(f(v)) grad f with f(q) of the other sign (or zero); the
 // segment [v, q] crosses the surface, so the distance is at most |q - v|. Where that ray finds
-// no sign change, or one farther than twice the estimate (near a kink of f the gradient can
-// point away from the nearest surface), the six axis directions are searched too and the
-// nearest sign change kept. Points where none is found within `search_radius` are counted as
-// uncertified. Signs are those of
+// no sign change, or one farther than the estimate (near a kink or a crease of f the gradient
+// can point away from the nearest surface), the 26 lattice directions (axes, face and body
+// diagonals) are searched too and the nearest sign change kept. Points where none is found within `search_radius` are counted as
+// uncertified (vertices also on their own). Signs are those of
 // genmod's point evaluation (exact up to its rounding).
 struct SurfaceDistance {
   std::size_t points = 0;                // vertices + triangle samples examined
@@ -50,6 +50,7 @@ struct SurfaceDistance {
   double max_face_estimate = 0.0;
   double mean_face_estimate = 0.0;
   std::size_t uncertified = 0;           // points with no sign change found
+  std::size_t uncertified_vertices = 0;  // of those, vertices
 };
 
 struct ComponentValidity {
