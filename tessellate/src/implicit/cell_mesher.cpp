@@ -804,19 +804,19 @@ bool CellMesher::root_in_tetrahedron(const Vec3& start, const Vec3 (&t)[4], Vec3
   samples.push_back(start);
   for (const Vec3& corner : t)
     for (int i = 1; i <= kSamples; ++i) samples.push_back(lerp(start, corner, 0.99 * i / kSamples));
+  return root_on_rays(samples, 4, kSamples, apex, error);
+}
+
+bool CellMesher::root_on_rays(std::span<const Vec3> samples, std::size_t rays, int per_ray, Vec3& apex,
+                              double& error) {
   std::vector<double> g;
   evaluate(samples, g);
   if (std::isnan(g[0])) return false;
   if (g[0] == 0.0) {
-    apex = start;
+    apex = samples[0];
     error = 0.0;
     return true;
   }
-  return nearest_bracketed_root(samples, g, 4, kSamples, apex, error);
-}
-
-bool CellMesher::nearest_bracketed_root(std::span<const Vec3> samples, std::span<const double> g, std::size_t rays,
-                                        int per_ray, Vec3& apex, double& error) {
   std::vector<Vec3> a, b;
   std::vector<double> ga, gb;
   const auto n = static_cast<std::size_t>(per_ray);
@@ -897,15 +897,7 @@ bool CellMesher::nearest_root(const Vec3& start, std::span<const Vec3> normals, 
       samples.push_back(q);
     }
   }
-  std::vector<double> g;
-  evaluate(samples, g);
-  if (std::isnan(g[0])) return false;
-  if (g[0] == 0.0) {
-    apex = x;
-    error = 0.0;
-    return true;
-  }
-  return nearest_bracketed_root(samples, g, dirs.size(), kSamples, apex, error);
+  return root_on_rays(samples, dirs.size(), kSamples, apex, error);
 }
 
 void CellMesher::cone(const Cell& cell, const std::vector<std::uint32_t>& loop, CellOutput& out) {

@@ -167,11 +167,10 @@ class CellMesher {
   // The root nearest to `start` (strictly inside t) on the segments to t's corners; the
   // result stays strictly inside.
   bool root_in_tetrahedron(const Vec3& start, const Vec3 (&t)[4], Vec3& apex, double& error);
-  // samples[0] is a ray's start and samples[1 + r * per_ray + i] its sample i + 1 on ray r,
-  // g their values: the bracketed root nearest to the start of the first sign change on
-  // each ray; false when no ray changes sign.
-  bool nearest_bracketed_root(std::span<const Vec3> samples, std::span<const double> g, std::size_t rays, int per_ray,
-                              Vec3& apex, double& error);
+  // samples[0] is the rays' common start and samples[1 + r * per_ray + i] sample i + 1 on
+  // ray r: of the first sign change on each ray, the bracketed root nearest to the start;
+  // false when no ray changes sign (or g fails at the start).
+  bool root_on_rays(std::span<const Vec3> samples, std::size_t rays, int per_ray, Vec3& apex, double& error);
   void cone(const Cell& cell, const std::vector<std::uint32_t>& loop, CellOutput& out);
   void tetrahedra(const Cell& cell, CellOutput& out);
   struct Accuracy {
