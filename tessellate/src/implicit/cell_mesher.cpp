@@ -610,18 +610,39 @@ void CellMesher::trace(const std::vector<Polygon>& polygons, const std::vector<K
   }
 }
 
+CellMesher::ShrunkCell CellMesher::shrunk_cell() const {
+  // A margin keeps moved vertices off the cell's faces, where the neighbours' vertices are.
+  const double margin = 1e-4 * cell_size_;
+  ShrunkCell c;
+  for (int k = 0; k < 3; ++k) {
+    c.lo[k] = cell_lo_[k] + margin;
+    c.hi[k] = cell_hi_[k] - margin;
+  }
+  return c;
+}
+
+Vec3 CellMesher::ShrunkCell::clamp(const Vec3& p) const {
+  Vec3 q;
+  for (int k = 0; k < 3; ++k) q[k] = std::clamp(p[k], lo[k], hi[k]);
+  return q;
+}
+
+double CellMesher::ShrunkCell::reach(const Vec3& x, const Vec3& d) const {
+  double t = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] > 0) t = std::min(t, (hi[k] - x[k]) / d[k]);
+    if (d[k] < 0) t = std::min(t, (lo[k] - x[k]) / d[k]);
+  }
+  return t;
+}
+
 bool CellMesher::snap(const Vec3& start, Vec3& apex, double& error) {
   // From `start` (inside the shrunk cell) along the gradient toward the other sign as far as
   // the shrunk cell allows; then the root between. The root is bracketed, so the vertex is
   // certified however far it moved.
-  const double margin = 1e-4 * cell_size_;
-  double lo[3], hi[3];
-  Vec3 x = start;
-  for (int k = 0; k < 3; ++k) {
-    lo[k] = cell_lo_[k] + margin;
-    hi[k] = cell_hi_[k] - margin;
-    x[k] = std::clamp(x[k], lo[k], hi[k]);
-  }
+  const ShrunkCell cell = shrunk_cell();
+  const double (&lo)[3] = cell.lo, (&hi)[3] = cell.hi;
+  const Vec3 x = cell.clamp(start);
   apex = x;
   std::vector<double> g, f;
   std::vector<Vec3> n;
@@ -635,11 +656,7 @@ bool CellMesher::snap(const Vec3& start, Vec3& apex, double& error) {
   if (!(dot(n[0], n[0]) > 0) || std::isnan(g[0])) return false;
   const double s = is_inside(g[0]) ? 1.0 : -1.0;  // toward the other sign
   const Vec3 dir{s * n[0][0], s * n[0][1], s * n[0][2]};
-  double reach = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 3; ++k) {
-    if (dir[k] > 0) reach = std::min(reach, (hi[k] - x[k]) / dir[k]);
-    if (dir[k] < 0) reach = std::min(reach, (lo[k] - x[k]) / dir[k]);
-  }
+  const double reach = cell.reach(x, dir);
   Vec3 y{x[0] + reach * dir[0], x[1] + reach * dir[1], x[2] + reach * dir[2]};
   for (int k = 0; k < 3; ++k) y[k] = std::clamp(y[k], lo[k], hi[k]);
   std::vector<double> gy;
@@ -662,14 +679,9 @@ bool CellMesher::line_root(const Vec3& start, const Vec3& direction, Vec3& apex,
   const double len = std::sqrt(dot(direction, direction));
   if (!(len > 0)) return false;
   const Vec3 d{direction[0] / len, direction[1] / len, direction[2] / len};
-  const double margin = 1e-4 * cell_size_;
-  double lo[3], hi[3];
-  Vec3 x = start;
-  for (int k = 0; k < 3; ++k) {
-    lo[k] = cell_lo_[k] + margin;
-    hi[k] = cell_hi_[k] - margin;
-    x[k] = std::clamp(x[k], lo[k], hi[k]);
-  }
+  const ShrunkCell cell = shrunk_cell();
+  const double (&lo)[3] = cell.lo, (&hi)[3] = cell.hi;
+  const Vec3 x = cell.clamp(start);
   double t_min = -std::numeric_limits<double>::infinity(), t_max = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 3; ++k) {
     if (d[k] > 0) {
@@ -854,14 +866,9 @@ bool CellMesher::nearest_root(const Vec3& start, std::span<const Vec3> normals, 
   // neighbouring samples with a sign change brackets a root, and the root nearest to `start`
   // wins. At a crease the gradient of the active piece can lead out of the solid's wedge
   // (snap() then fails), while some of these rays cross into it near the crease.
-  const double margin = 1e-4 * cell_size_;
-  double lo[3], hi[3];
-  Vec3 x = start;
-  for (int k = 0; k < 3; ++k) {
-    lo[k] = cell_lo_[k] + margin;
-    hi[k] = cell_hi_[k] - margin;
-    x[k] = std::clamp(x[k], lo[k], hi[k]);
-  }
+  const ShrunkCell cell = shrunk_cell();
+  const double (&lo)[3] = cell.lo, (&hi)[3] = cell.hi;
+  const Vec3 x = cell.clamp(start);
   std::vector<Vec3> dirs;
   Vec3 mean{0, 0, 0};
   auto add = [&](Vec3 d) {
@@ -885,11 +892,7 @@ bool CellMesher::nearest_root(const Vec3& start, std::span<const Vec3> normals, 
   samples.reserve(1 + dirs.size() * kSamples);
   samples.push_back(x);
   for (std::size_t r = 0; r < dirs.size(); ++r) {
-    double reach = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < 3; ++k) {
-      if (dirs[r][k] > 0) reach = std::min(reach, (hi[k] - x[k]) / dirs[r][k]);
-      if (dirs[r][k] < 0) reach = std::min(reach, (lo[k] - x[k]) / dirs[r][k]);
-    }
+    double reach = cell.reach(x, dirs[r]);
     if (!std::isfinite(reach)) reach = 0.0;
     for (int i = 1; i <= kSamples; ++i) {
       Vec3 q;

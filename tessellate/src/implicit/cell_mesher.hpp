@@ -152,6 +152,14 @@ class CellMesher {
   void trace(const std::vector<Polygon>& polygons, const std::vector<Key>& keys, const std::vector<double>& values,
              CellOutput& out, std::vector<Segment>& segments);
   std::uint32_t vertex(CellOutput& out, const VertexKey& key, const Vec3& p, double error);
+  // The cell less a small margin: where moved vertices may go.
+  struct ShrunkCell {
+    double lo[3], hi[3];
+    Vec3 clamp(const Vec3& p) const;
+    // How far from x (inside) along d the boundary is (infinity for d = 0).
+    double reach(const Vec3& x, const Vec3& d) const;
+  };
+  ShrunkCell shrunk_cell() const;
   // Moves `start` onto the surface along the gradient; false when no root is within reach.
   bool snap(const Vec3& start, Vec3& apex, double& error);
   // The same inside the tetrahedron t (start strictly inside, the result too).
