@@ -8,6 +8,8 @@
 #include "genmod/solvers/contractor.hpp"
 
 #include <Eigen/Dense>
+#include <tbb/parallel_invoke.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -22,6 +24,32 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 enum class Feasibility { No, Yes, Maybe };
+
+// The evaluators a box's bounds need; one per child of a split, so that the two children of
+// a box are bounded in parallel.
+struct Worker {
+  IntervalEvaluator ev;
+  InclusionFunction inclusion;                 // the objective
+  std::optional<Hc4Contractor> hc4;            // the constraint's contractor
+  std::optional<InclusionFunction> lagrangian;
+  std::optional<minimizer_detail::FeasiblePointCertifier> certifier;
+};
+
+// A child box bounded (by a Worker) but not yet in the list: committing it in a fixed order
+// applies the u updates exactly as bounding the children one after the other would.
+struct Child {
+  bool alive = false;   // survived contraction, feasibility and the objective's bounds
+  Box box;
+  Interval f;
+  std::vector<Interval> grad;
+  double key = 0.0;
+  Feasibility feasible = Feasibility::Maybe;
+  bool no_error = false;
+  std::optional<double> point_value;      // rule 1 at the midpoint: sup f there, if feasible
+  bool certified = false;                 // rule 3: a certified feasible sub-box was found
+  std::vector<double> certified_point;
+  std::optional<double> certified_value;  // sup f over that sub-box, if defined
+};
 
 struct Entry {
   double key;          // lower bound of the objective over the box (never below the parent's)
@@ -78,6 +106,8 @@ void validate(const Fn& objective, const Fn& constraint, std::span<const int> un
     throw std::invalid_argument(who + ": equality_tolerance must be finite and >= 0, got " +
                                 std::to_string(opt.equality_tolerance));
   if (opt.limits.max_depth < 0) throw std::invalid_argument(who + ": limits.max_depth must be >= 0");
+  if (opt.threads < 0) throw std::invalid_argument(who + ": threads must be >= 0 (0 = oneTBB's default), got " +
+                                                   std::to_string(opt.threads));
   if (!(opt.limits.time_limit >= 0.0))
     throw std::invalid_argument(who + ": limits.time_limit must be >= 0 (0 = none)");
 }
@@ -109,6 +139,16 @@ class Search {
       if (auto r = minimizer_detail::constraint_residuals(constraint)) residual_tape.emplace(*r, unknowns);
       local_.emplace(inclusion_.tape(), c_, std::move(residual_tape), box);
     }
+    Worker w{IntervalEvaluator(), inclusion_, {}, lagrangian_, certifier_};
+    if (hc4_) w.hc4.emplace(*system_);
+    workers_.assign(2, w);
+    if (opt.threads != 1) {
+      // (Not a conditional expression: that would bind a reference to task_arena::automatic,
+      // which oneTBB declares but does not define out of line.)
+      int concurrency = opt.threads;
+      if (concurrency == 0) concurrency = tbb::task_arena::automatic;
+      arena_.emplace(concurrency);
+    }
   }
 
   MinimizeResult run();
@@ -121,7 +161,7 @@ class Search {
     bool no_error = false;  // the objective is defined everywhere on the box
   };
 
-  Feasibility constraint_on(std::span<const Interval> box);
+  Feasibility constraint_on(Worker& w, std::span<const Interval> box);
   // The Lagrangian lower bound: for multipliers lambda (>= 0 for inequalities g <= 0, any
   // sign for equalities g = 0), f(x) >= L(x) = f(x) + sum lambda_i g_i(x) at every feasible x,
   // so inf L over a box bounds f over its feasible points from below, whatever lambda is.
@@ -129,12 +169,20 @@ class Search {
   // value form is second order: boxes at the minimizer need not shrink to width delta.
   void build_lagrangian(const Fn& objective, std::span<const int> unknowns);
   void update_multipliers();
-  double lagrangian_bound(std::span<const Interval> box);
-  Bounds bound_objective(std::span<const Interval> box);
+  double lagrangian_bound(Worker& w, std::span<const Interval> box);
+  Bounds bound_objective(Worker& w, std::span<const Interval> box);
+  // sup f at q when q is proven feasible and f is defined there.
+  std::optional<double> point_value(Worker& w, std::span<const double> q);
   void try_point(std::span<const double> q);
-  // Rule 1 for exact equalities: a sub-box of `box` certified to hold a feasible point.
+  // Rule 3 for exact equalities: a sub-box of `box` certified to hold a feasible point.
+  void certify_in(Worker& w, std::span<const Interval> box, Child& c);
   void try_certified(std::span<const Interval> box);
+  void offer(double value, std::vector<double> point);
+  // Bounds a child of a box; u_before is u at the start of the split (u only decreases).
+  Child bound_child(Worker& w, Box box, double parent_key, const Interval& parent_f, double u_before);
+  void commit(Child&& c, int depth);
   void push(Box box, int depth, double parent_key, const Interval& parent_f);
+  void push_children(Box a, Box b, int depth, double parent_key, const Interval& parent_f);
   Entry pop();
   double lower_bound() const;
   bool limit_reached();
@@ -151,7 +199,8 @@ class Search {
   Tape c_;
   double constant_ = 0.0;
   const bool trivially_feasible_;
-  IntervalEvaluator ev_;
+  std::vector<Worker> workers_;   // [0] for the serial steps; [0] and [1] bound split children
+  std::optional<tbb::task_arena> arena_;
   std::optional<minimizer_detail::LocalSearch> local_;
   std::optional<minimizer_detail::FeasiblePointCertifier> certifier_;
   std::optional<ConstraintSystem> system_;  // the constraint (relaxed if eta > 0), for HC4
@@ -175,10 +224,10 @@ class Search {
   LimitWatch watch_{opt_.limits};
 };
 
-Feasibility Search::constraint_on(std::span<const Interval> box) {
+Feasibility Search::constraint_on(Worker& w, std::span<const Interval> box) {
   if (trivially_feasible_) return Feasibility::Yes;
-  const Interval c = ev_.eval(c_, box)[0];
-  const std::uint8_t err = ev_.errors()[0];
+  const Interval c = w.ev.eval(c_, box)[0];
+  const std::uint8_t err = w.ev.errors()[0];
   if (c.is_empty() || err == kCertainError || (c.lo() == 0.0 && c.hi() == 0.0)) return Feasibility::No;
   if (err == kNoError && !c.contains_zero()) return Feasibility::Yes;
   return Feasibility::Maybe;
@@ -258,22 +307,22 @@ void Search::update_multipliers() {
   }
 }
 
-double Search::lagrangian_bound(std::span<const Interval> box) {
-  if (!lagrangian_ || std::all_of(lambda_.begin(), lambda_.end(), [](double l) { return l == 0.0; })) return -kInf;
+double Search::lagrangian_bound(Worker& w, std::span<const Interval> box) {
+  if (!w.lagrangian || std::all_of(lambda_.begin(), lambda_.end(), [](double l) { return l == 0.0; })) return -kInf;
   std::vector<Interval> in(box.begin(), box.end());
   for (double l : lambda_) in.emplace_back(l);
-  const Interval v = lagrangian_->eval(in, opt_.inclusion_forms)[0];
+  const Interval v = w.lagrangian->eval(in, opt_.inclusion_forms)[0];
   // Points where L fails are points where f or some g_i fails: not feasible.
   if (v.is_empty()) return -kInf;
   return v.lo();
 }
 
-Search::Bounds Search::bound_objective(std::span<const Interval> box) {
+Search::Bounds Search::bound_objective(Worker& w, std::span<const Interval> box) {
   Bounds b;
   // The gradient enclosure is wanted by the monotonicity test even when the forms are off.
   const bool want_grad = (opt_.inclusion_forms & (kMeanValueForm | kMonotonicityForm)) || opt_.monotonicity_test;
-  b.f = inclusion_.eval(box, opt_.inclusion_forms, want_grad ? &b.grad : nullptr)[0];
-  const std::uint8_t err = inclusion_.errors()[0];
+  b.f = w.inclusion.eval(box, opt_.inclusion_forms, want_grad ? &b.grad : nullptr)[0];
+  const std::uint8_t err = w.inclusion.errors()[0];
   if (b.f.is_empty() || err == kCertainError) {
     b.empty = true;
     b.grad.clear();
@@ -284,65 +333,111 @@ Search::Bounds Search::bound_objective(std::span<const Interval> box) {
 }
 
 // Rule 1 of the u update: a point proven feasible, with the objective bounded rigorously there.
-void Search::try_point(std::span<const double> q) {
+std::optional<double> Search::point_value(Worker& w, std::span<const double> q) {
   std::vector<Interval> point(q.size());
   for (std::size_t i = 0; i < q.size(); ++i) {
-    if (!std::isfinite(q[i]) || !root_[i].contains(q[i])) return;
+    if (!std::isfinite(q[i]) || !root_[i].contains(q[i])) return std::nullopt;
     point[i] = Interval(q[i]);
   }
-  if (constraint_on(point) != Feasibility::Yes) return;
-  const Interval fq = ev_.eval(inclusion_.tape(), point)[0];
-  if (ev_.errors()[0] != kNoError || fq.is_empty()) return;
-  if (fq.hi() < u_) {
-    u_ = fq.hi();
-    best_.assign(q.begin(), q.end());
+  if (constraint_on(w, point) != Feasibility::Yes) return std::nullopt;
+  const Interval fq = w.ev.eval(inclusion_.tape(), point)[0];
+  if (w.ev.errors()[0] != kNoError || fq.is_empty()) return std::nullopt;
+  return fq.hi();
+}
+
+void Search::offer(double value, std::vector<double> point) {
+  if (value < u_) {
+    u_ = value;
+    best_ = std::move(point);
     multipliers_stale_ = true;
   }
+}
+
+void Search::try_point(std::span<const double> q) {
+  if (const std::optional<double> v = point_value(workers_[0], q)) offer(*v, {q.begin(), q.end()});
 }
 
 // B holds a point x with constraint(x) true (FeasiblePointCertifier), so f* <= f(x) <= sup f(B).
-void Search::try_certified(std::span<const Interval> box) {
-  const std::optional<Box> b = certifier_->find(box);
+void Search::certify_in(Worker& w, std::span<const Interval> box, Child& c) {
+  const std::optional<Box> b = w.certifier->find(box);
   if (!b) return;
-  ++result_.certified_points;
-  const Interval fb = ev_.eval(inclusion_.tape(), *b)[0];
-  if (ev_.errors()[0] != kNoError || fb.is_empty()) return;
-  if (fb.hi() < u_) {
-    u_ = fb.hi();
-    best_ = midpoint(*b);
-    multipliers_stale_ = true;
-  }
+  c.certified = true;
+  c.certified_point = midpoint(*b);
+  const Interval fb = w.ev.eval(inclusion_.tape(), *b)[0];
+  if (w.ev.errors()[0] == kNoError && !fb.is_empty()) c.certified_value = fb.hi();
 }
 
-void Search::push(Box box, int depth, double parent_key, const Interval& parent_f) {
+void Search::try_certified(std::span<const Interval> box) {
+  Child c;
+  certify_in(workers_[0], box, c);
+  if (!c.certified) return;
+  ++result_.certified_points;
+  if (c.certified_value) offer(*c.certified_value, std::move(c.certified_point));
+}
+
+Child Search::bound_child(Worker& w, Box box, double parent_key, const Interval& parent_f, double u_before) {
+  Child c;
   // Contract with the constraint first (HC4 removes only infeasible points, so every minimizer
   // stays in the box): tighter objective bounds, and infeasible boxes die early.
-  if (hc4_) {
+  if (w.hc4) {
     for (int pass = 0; pass < 4; ++pass) {
       const double w0 = width(box);
-      if (!hc4_->contract(box)) return;
+      if (!w.hc4->contract(box)) return c;
       if (!(width(box) < 0.9 * w0)) break;
     }
   }
-  const Feasibility feasible = constraint_on(box);
-  if (feasible == Feasibility::No) return;
-  Bounds b = bound_objective(box);
-  if (b.empty) return;
-  Interval f = intersect(b.f, parent_f);
-  if (f.is_empty()) f = b.f;
-  const double key = std::max({f.lo(), parent_key, lagrangian_bound(box)});
-  if (key > u_) return;
-  // Rule 2: the whole box is feasible, so any of its points bounds the minimum by ub f(box).
-  if (feasible == Feasibility::Yes && b.no_error && f.hi() < u_) {
-    u_ = f.hi();
-    best_ = midpoint(box);
-    multipliers_stale_ = true;
+  c.feasible = constraint_on(w, box);
+  if (c.feasible == Feasibility::No) return c;
+  Bounds b = bound_objective(w, box);
+  if (b.empty) return c;
+  c.f = intersect(b.f, parent_f);
+  if (c.f.is_empty()) c.f = b.f;
+  c.key = std::max({c.f.lo(), parent_key, lagrangian_bound(w, box)});
+  c.alive = true;
+  c.no_error = b.no_error;
+  c.grad = std::move(b.grad);
+  if (c.key <= u_before) {  // else commit() drops it: u never grows
+    c.point_value = point_value(w, midpoint(box));
+    if (w.certifier && c.feasible == Feasibility::Maybe) certify_in(w, box, c);
   }
-  try_point(midpoint(box));
-  if (certifier_ && feasible == Feasibility::Maybe) try_certified(box);
-  Entry e{key, seq_++, depth, std::move(box), f, std::move(b.grad), false};
+  c.box = std::move(box);
+  return c;
+}
+
+void Search::commit(Child&& c, int depth) {
+  if (!c.alive || c.key > u_) return;
+  // Rule 2: the whole box is feasible, so any of its points bounds the minimum by ub f(box).
+  if (c.feasible == Feasibility::Yes && c.no_error) offer(c.f.hi(), midpoint(c.box));
+  if (c.point_value) offer(*c.point_value, midpoint(c.box));
+  if (c.certified) {
+    ++result_.certified_points;
+    if (c.certified_value) offer(*c.certified_value, std::move(c.certified_point));
+  }
+  Entry e{c.key, seq_++, depth, std::move(c.box), c.f, std::move(c.grad), false};
   heap_.push_back(std::move(e));
   std::push_heap(heap_.begin(), heap_.end(), Later{});
+}
+
+void Search::push(Box box, int depth, double parent_key, const Interval& parent_f) {
+  commit(bound_child(workers_[0], std::move(box), parent_key, parent_f, u_), depth);
+}
+
+// Both children bounded at once (one Worker each), then committed in order: the result is
+// the same as pushing them one after the other, for any thread count.
+void Search::push_children(Box a, Box b, int depth, double parent_key, const Interval& parent_f) {
+  const double u_before = u_;
+  Child ca, cb;
+  auto both = [&] {
+    tbb::parallel_invoke([&] { ca = bound_child(workers_[0], std::move(a), parent_key, parent_f, u_before); },
+                         [&] { cb = bound_child(workers_[1], std::move(b), parent_key, parent_f, u_before); });
+  };
+  if (arena_) arena_->execute(both);
+  else {
+    ca = bound_child(workers_[0], std::move(a), parent_key, parent_f, u_before);
+    cb = bound_child(workers_[1], std::move(b), parent_key, parent_f, u_before);
+  }
+  commit(std::move(ca), depth);
+  commit(std::move(cb), depth);
 }
 
 Entry Search::pop() {
@@ -397,7 +492,7 @@ bool Search::monotonicity_test(Entry& e) {
     Box wide(e.box);
     for (Interval& s : wide)
       s = Interval::unchecked(interval_detail::next_down(s.lo()), interval_detail::next_up(s.hi()));
-    if (constraint_on(wide) != Feasibility::Yes) return true;
+    if (constraint_on(workers_[0], wide) != Feasibility::Yes) return true;
   }
   bool reduced = false;
   for (std::size_t j = 0; j < n; ++j) {
@@ -468,8 +563,7 @@ MinimizeResult Search::run() {
         if (report.limit == LimitHit::None) report.limit = LimitHit::MaxDepth;
       } else {
         auto [a, b] = bisect(e.box, widest_side(e.box));
-        push(std::move(a), e.depth + 1, e.key, e.f);
-        push(std::move(b), e.depth + 1, e.key, e.f);
+        push_children(std::move(a), std::move(b), e.depth + 1, e.key, e.f);
         step_callback();
         continue;
       }

@@ -310,6 +310,55 @@ TEST(Minimizer, RosenSuzukiConverges) {
   EXPECT_TRUE(covered(r, minimizer));
 }
 
+// The two halves of each split are bounded in parallel and entered in order: the result is
+// bitwise the same for 1 and 2 threads, with inequalities (Rosen-Suzuki, HC4 and the
+// Lagrangian bound) and with an exact equality (the feasible-point certifier).
+TEST(Minimizer, SameResultForOneAndTwoThreads) {
+  const Fn x1 = x(0), x2 = x(1), x3 = x(2), x4 = x(3);
+  const Fn rosen_suzuki = square(x1) + square(x2) + 2.0 * square(x3) + square(x4) - 5.0 * x1 - 5.0 * x2 - 21.0 * x3 + 7.0 * x4;
+  const Fn rosen_suzuki_constraint =
+      (square(x1) + square(x2) + square(x3) + square(x4) + x1 - x2 + x3 - x4 - 8.0 <= 0.0) &&
+      (square(x1) + 2.0 * square(x2) + square(x3) + 2.0 * square(x4) - x1 - x4 - 10.0 <= 0.0) &&
+      (2.0 * square(x1) + square(x2) + square(x3) + 2.0 * x1 - x2 - x4 - 5.0 <= 0.0);
+  struct Problem {
+    Fn f, c;
+    std::vector<int> unknowns;
+    Box box;
+    double delta;
+  };
+  const Problem problems[] = {
+      {rosen_suzuki, rosen_suzuki_constraint, {0, 1, 2, 3}, Box(4, Interval(-3, 3)), 1e-3},
+      {x1 + x2, eq(square(x1) + square(x2), 1.0), {0, 1}, Box(2, Interval(-2, 2)), 1e-6}};
+  for (const Problem& p : problems) {
+    MinimizeOptions opt;
+    opt.delta = p.delta;
+    opt.epsilon = 1e-3;
+    std::vector<MinimizeResult> r;
+    for (int threads : {1, 2, 1}) {
+      opt.threads = threads;
+      r.push_back(minimize(p.f, p.c, p.unknowns, p.box, opt));
+    }
+    EXPECT_TRUE(r[0].feasible_found);
+    for (std::size_t k = 1; k < r.size(); ++k) {
+      SCOPED_TRACE(k);
+      EXPECT_EQ(r[k].minimum.lo(), r[0].minimum.lo());
+      EXPECT_EQ(r[k].minimum.hi(), r[0].minimum.hi());
+      EXPECT_EQ(r[k].best_point, r[0].best_point);
+      EXPECT_EQ(r[k].report.boxes_processed, r[0].report.boxes_processed);
+      EXPECT_EQ(r[k].certified_points, r[0].certified_points);
+      ASSERT_EQ(r[k].candidates.size(), r[0].candidates.size());
+      for (std::size_t i = 0; i < r[0].candidates.size(); ++i)
+        for (std::size_t j = 0; j < p.unknowns.size(); ++j) {
+          EXPECT_EQ(r[k].candidates[i][j].lo(), r[0].candidates[i][j].lo());
+          EXPECT_EQ(r[k].candidates[i][j].hi(), r[0].candidates[i][j].hi());
+        }
+    }
+  }
+  MinimizeOptions bad;
+  bad.threads = -1;
+  EXPECT_THROW(minimize(x1, Fn(1.0), {0}, {Interval(0, 1)}, bad), std::invalid_argument);
+}
+
 TEST(Minimizer, ObjectiveErrorsAreNotFeasiblePoints) {
   // sqrt(x) - x is undefined for x < 0; the minimum over its domain [0, 2] is at x = 2.
   const int unknown[] = {0};

@@ -109,6 +109,12 @@ struct MinimizeOptions {
   bool local_search = true;
   // eta of the equality relaxation (see above); 0 = no relaxation. Must be >= 0.
   double equality_tolerance = 0.0;
+  // Worker threads (0 = oneTBB's default, 1 = none): the two halves of a split box are
+  // contracted and bounded at once, then entered in order, so the result is bitwise the same
+  // for any thread count. One by default: starting workers costs about a millisecond per
+  // call, which nested operators and queries (one search per evaluation) would pay each
+  // time; a single long search gains (Rosen-Suzuki: 1.2-1.3x less wall time on 2 cores).
+  int threads = 1;
   // Called after every box taken from the list (optional).
   std::function<void(const MinimizeStep&)> on_step;
 };
@@ -142,7 +148,7 @@ struct MinimizeResult {
 // the unknowns. Throws std::invalid_argument naming the problem for: a non-scalar objective
 // or constraint, a dependency on a coordinate that is not an unknown, repeated or out of range
 // unknowns, a box of the wrong dimension or with an empty / unbounded / NaN side,
-// epsilon or delta not finite and > 0, a negative or NaN equality_tolerance.
+// epsilon or delta not finite and > 0, a negative or NaN equality_tolerance, threads < 0.
 MinimizeResult minimize(const Fn& objective, const Fn& constraint, Coordinates unknowns, const Box& box,
                         const MinimizeOptions& options = {});
 
