@@ -79,8 +79,10 @@ py::array_t<double> solution_boxes(const SolveAnswer& a) {
 
 MinimizeResult run_minimize(const Fn& objective, const std::vector<int>& unknowns, const DoubleArray& box,
                             const std::optional<Fn>& constraint, double epsilon, double delta, std::size_t max_boxes,
-                            int max_depth, double time_limit, double equality_tolerance, bool value_only) {
+                            int max_depth, double time_limit, double equality_tolerance, bool value_only,
+                            int threads) {
   MinimizeOptions o;
+  o.threads = threads;
   o.epsilon = epsilon;
   o.delta = delta;
   o.limits = limits_of(max_boxes, max_depth, time_limit);
@@ -189,9 +191,11 @@ point with f <= hi (empty if none).)doc");
         py::arg("constraint") = std::optional<Fn>{}, py::arg("epsilon") = 1e-4, py::arg("delta") = 1e-6,
         py::arg("max_boxes") = SearchLimits{}.max_boxes, py::arg("max_depth") = SearchLimits{}.max_depth,
         py::arg("time_limit") = 0.0, py::arg("equality_tolerance") = 0.0, py::arg("value_only") = false,
+        py::arg("threads") = 1,
         R"doc(The global minimum of a scalar objective over the points of `box` where `constraint` is
 nonzero (default: everywhere), by interval branch and bound. value_only stops as soon as the
-bracket is delta wide (faster; candidates are then the boxes still open).)doc");
+bracket is delta wide (faster; candidates are then the boxes still open). threads: 1 (default),
+0 for oneTBB's default or a count; the result is the same for any count.)doc");
 
   py::class_<RayHit>(m, "RayHit", "The first hit of a ray: hit, t (2,) the ray parameter ([nan, nan] on a miss), "
                                   "u, v (parametric surfaces), certified (one hit in the box and none before), complete.")

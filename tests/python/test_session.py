@@ -98,6 +98,11 @@ def test_the_closest_point_of_the_part_by_constrained_minimization():
     assert np.allclose(result.best_point, [0.3, 0.25, 0.2], atol=1e-3)
     with pytest.raises(ValueError, match="not among the unknowns"):
         gm.minimize(objective, [0, 1], box)
+    # Two threads bound the halves of each split at once: the same answer, bitwise.
+    two = gm.minimize(objective, [0, 1, 2], box, epsilon=1e-6, delta=1e-9, threads=2)
+    assert np.array_equal(two.minimum, result.minimum)
+    assert np.array_equal(two.best_point, result.best_point)
+    assert np.array_equal(two.candidates, result.candidates)
 
 
 def test_curves_meet_where_expected():
