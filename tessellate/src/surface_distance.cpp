@@ -38,7 +38,8 @@ double sign_change_along(const Tape& tape, PointEvaluator& point, const std::arr
   auto flips = [&](double t) {
     const double q[3] = {p[0] + t * dir[0], p[1] + t * dir[1], p[2] + t * dir[2]};
     const double fq = point.eval(tape, q)[0];
-    return fq == 0.0 || (fq > 0) != (f > 0);
+    // An error (NaN) is no sign change: f need not vanish between a value and an error.
+    return fq == 0.0 || (!std::isnan(fq) && (fq > 0) != (f > 0));
   };
   double same = 0.0;  // a step with f's sign (0: the point itself)
   for (double factor : kFactors) {

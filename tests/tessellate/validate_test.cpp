@@ -260,6 +260,20 @@ TEST(Validate, SurfaceDistanceOfAnIcosphere) {
   EXPECT_NEAR(v.surface.max_face_estimate, deepest, 1e-3 * deepest);
 }
 
+TEST(Validate, AnErrorIsNoSignChange) {
+  // f = sqrt(1.2 - |p|^2) + 0.5 is positive wherever it is defined and an error (NaN) beyond
+  // |p| = sqrt(1.2): it has no surface, so no point may be certified, although every ray
+  // outward from the unit icosphere reaches the error region within the search radius.
+  const Mesh m = icosphere(2);
+  const Fn p[3] = {x(0), x(1), x(2)};
+  const Tape no_surface(sqrt(1.2 - (square(p[0]) + square(p[1]) + square(p[2]))) + 0.5);
+  const MeshValidity v = validate(m, {.surface = &no_surface, .face_samples = 1, .search_radius = 0.5});
+  ASSERT_TRUE(v.has_surface_distance);
+  EXPECT_EQ(v.surface.uncertified_vertices, m.vertices.size());
+  EXPECT_EQ(v.surface.uncertified, m.vertices.size() + m.triangles.size());
+  EXPECT_EQ(v.surface.max_vertex_bound, 0.0);
+}
+
 TEST(Validate, RejectsBadOptions) {
   const Tape planar(x(0) + x(1));
   EXPECT_THROW(validate(tetrahedron(), {.surface = &planar}), std::invalid_argument);
