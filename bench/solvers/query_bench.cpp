@@ -30,18 +30,20 @@ void BM_CrossedCylinders(benchmark::State& state) {
   state.SetLabel(state.range(0) == 0 ? "turning points on bisection lines" : "shifted 0.05");
   const Fn a = cat({cos(2 * kPi * x(0)), sin(2 * kPi * x(0)), 4 * x(1) - 2});
   const Fn b = cat({4 * x(0) - 2 + shift, 0.6 * cos(2 * kPi * x(1)), 0.6 * sin(2 * kPi * x(1))});
+  SurfaceIntersectionOptions options;
+  options.periodic_u = options.periodic_t = true;   // the two angles
   SurfaceIntersection r;
   for (auto _ : state) {
-    r = surface_intersection(a, b, {}, {}, {.periodic_u = true, .periodic_t = true});
+    r = surface_intersection(a, b, {}, {}, options);
     benchmark::DoNotOptimize(r.components);
   }
   report(state, r.curve);
 }
 BENCHMARK(BM_CrossedCylinders)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
-// The lemniscate of Bernoulli, (x^2 + y^2)^2 = 2 (x^2 - y^2): a figure eight whose extreme
-// points in y touch the lines y = +-1/(2 sqrt 2) and whose double point is the origin, on
-// the first bisection lines of [-2, 2]^2.
+// The lemniscate of Bernoulli, (x^2 + y^2)^2 = 2 (x^2 - y^2): a figure eight whose double
+// point is the origin, on the first bisection lines of [-2, 2]^2, and whose extreme points in
+// y touch the bisection lines y = +-1/2.
 void BM_Lemniscate(benchmark::State& state) {
   const Fn r2 = square(x(0)) + square(x(1));
   const Fn f = square(r2) - 2.0 * (square(x(0)) - square(x(1)));

@@ -126,22 +126,21 @@ class Search {
     if (!trivially_feasible_) {
       system_.emplace(opt.equality_tolerance > 0.0 ? relax_equalities(constraint, opt.equality_tolerance) : constraint,
                       unknowns);
-      hc4_.emplace(*system_);
       build_lagrangian(objective, unknowns);
     }
+    Worker w{IntervalEvaluator(), inclusion_, {}, lagrangian_, {}};
+    if (system_) w.hc4.emplace(*system_);
     // Exact equalities (no relaxation): certified boxes holding feasible points give u.
     if (opt.equality_tolerance == 0.0 && !trivially_feasible_) {
-      certifier_.emplace(constraint, unknowns);
-      if (!certifier_->active()) certifier_.reset();
+      w.certifier.emplace(constraint, unknowns);
+      if (!w.certifier->active()) w.certifier.reset();
     }
+    workers_.assign(2, w);
     if (opt_.local_search) {
       std::optional<Tape> residual_tape;
       if (auto r = minimizer_detail::constraint_residuals(constraint)) residual_tape.emplace(*r, unknowns);
       local_.emplace(inclusion_.tape(), c_, std::move(residual_tape), box);
     }
-    Worker w{IntervalEvaluator(), inclusion_, {}, lagrangian_, certifier_};
-    if (hc4_) w.hc4.emplace(*system_);
-    workers_.assign(2, w);
     if (opt.threads != 1) {
       // (Not a conditional expression: that would bind a reference to task_arena::automatic,
       // which oneTBB declares but does not define out of line.)
@@ -202,9 +201,7 @@ class Search {
   std::vector<Worker> workers_;   // [0] for the serial steps; [0] and [1] bound split children
   std::optional<tbb::task_arena> arena_;
   std::optional<minimizer_detail::LocalSearch> local_;
-  std::optional<minimizer_detail::FeasiblePointCertifier> certifier_;
-  std::optional<ConstraintSystem> system_;  // the constraint (relaxed if eta > 0), for HC4
-  std::optional<Hc4Contractor> hc4_;        // keeps a reference to *system_
+  std::optional<ConstraintSystem> system_;  // the constraint (relaxed if eta > 0); the workers' HC4 refers to it
   // Lagrangian: g_i of the top-level conjuncts (g <= 0 or g = 0), multipliers as extra inputs.
   std::vector<Fn> g_;
   std::vector<std::uint8_t> g_equality_;
@@ -539,7 +536,7 @@ MinimizeResult Search::run() {
         ++result_.local_searches;
         const std::vector<double> q = local_->run(midpoint(e.box));
         try_point(q);
-        if (certifier_ && q.size() == root_.size()) {  // a small box around the local minimum
+        if (workers_[0].certifier && q.size() == root_.size()) {  // a small box around the local minimum
           Box around(q.size());
           bool inside = true;
           for (std::size_t i = 0; i < q.size(); ++i) {

@@ -121,10 +121,10 @@ std::array<double, 3> sample_weights(int k) {
 struct Accumulator {
   double max_vertex_bound = 0, max_vertex_estimate = 0, max_face_bound = 0, max_face_estimate = 0;
   double sum_face_estimate = 0;
-  std::size_t face_points = 0, uncertified = 0, uncertified_vertices = 0;
+  std::size_t face_points = 0, uncertified_faces = 0, uncertified_vertices = 0;
 
   void add(const Result& r, bool vertex) {
-    if (r.bound < 0) ++(vertex ? uncertified_vertices : uncertified);
+    if (r.bound < 0) ++(vertex ? uncertified_vertices : uncertified_faces);
     double& bound = vertex ? max_vertex_bound : max_face_bound;
     double& estimate = vertex ? max_vertex_estimate : max_face_estimate;
     if (r.bound > bound) bound = r.bound;
@@ -141,7 +141,7 @@ struct Accumulator {
     max_face_estimate = std::max(max_face_estimate, o.max_face_estimate);
     sum_face_estimate += o.sum_face_estimate;
     face_points += o.face_points;
-    uncertified += o.uncertified;
+    uncertified_faces += o.uncertified_faces;
     uncertified_vertices += o.uncertified_vertices;
   }
 };
@@ -190,7 +190,7 @@ SurfaceDistance measure_surface_distance(const Mesh& mesh, const Tape& surface, 
   d.max_face_bound = acc.max_face_bound;
   d.max_face_estimate = acc.max_face_estimate;
   d.mean_face_estimate = acc.face_points ? acc.sum_face_estimate / static_cast<double>(acc.face_points) : 0.0;
-  d.uncertified = acc.uncertified + acc.uncertified_vertices;
+  d.uncertified = acc.uncertified_faces + acc.uncertified_vertices;
   d.uncertified_vertices = acc.uncertified_vertices;
   return d;
 }

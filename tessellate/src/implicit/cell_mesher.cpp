@@ -641,7 +641,6 @@ bool CellMesher::snap(const Vec3& start, Vec3& apex, double& error) {
   // the shrunk cell allows; then the root between. The root is bracketed, so the vertex is
   // certified however far it moved.
   const ShrunkCell cell = shrunk_cell();
-  const double (&lo)[3] = cell.lo, (&hi)[3] = cell.hi;
   const Vec3 x = cell.clamp(start);
   apex = x;
   std::vector<double> g, f;
@@ -657,8 +656,7 @@ bool CellMesher::snap(const Vec3& start, Vec3& apex, double& error) {
   const double s = is_inside(g[0]) ? 1.0 : -1.0;  // toward the other sign
   const Vec3 dir{s * n[0][0], s * n[0][1], s * n[0][2]};
   const double reach = cell.reach(x, dir);
-  Vec3 y{x[0] + reach * dir[0], x[1] + reach * dir[1], x[2] + reach * dir[2]};
-  for (int k = 0; k < 3; ++k) y[k] = std::clamp(y[k], lo[k], hi[k]);
+  const Vec3 y = cell.clamp({x[0] + reach * dir[0], x[1] + reach * dir[1], x[2] + reach * dir[2]});
   std::vector<double> gy;
   evaluate(std::span(&y, 1), gy);
   if (is_inside(gy[0]) == is_inside(g[0])) return false;
@@ -867,37 +865,36 @@ bool CellMesher::nearest_root(const Vec3& start, std::span<const Vec3> normals, 
   // wins. At a crease the gradient of the active piece can lead out of the solid's wedge
   // (snap() then fails), while some of these rays cross into it near the crease.
   const ShrunkCell cell = shrunk_cell();
-  const double (&lo)[3] = cell.lo, (&hi)[3] = cell.hi;
   const Vec3 x = cell.clamp(start);
   std::vector<Vec3> dirs;
-  Vec3 mean{0, 0, 0};
-  auto add = [&](Vec3 d) {
+  auto add_both_senses = [&](Vec3 d) {
     const double len = std::sqrt(dot(d, d));
     if (!(len > 0) || !std::isfinite(len)) return;
     for (int k = 0; k < 3; ++k) d[k] /= len;
     dirs.push_back(d);
     dirs.push_back({-d[0], -d[1], -d[2]});
   };
+  Vec3 mean{0, 0, 0};
   for (const Vec3& n : normals) {
-    add(n);
+    add_both_senses(n);
     for (int k = 0; k < 3; ++k) mean[k] += n[k];
   }
-  add(mean);
+  add_both_senses(mean);
   for (int a = -1; a <= 1; ++a)
     for (int b = -1; b <= 1; ++b)
-      for (int c = 0; c <= 1; ++c)
-        if (c == 1 || b == 1 || (b == 0 && a == 1)) add({double(a), double(b), double(c)});  // one of each +-pair
+      for (int c = -1; c <= 1; ++c) {
+        const double len = std::sqrt(double(a * a + b * b + c * c));
+        if (len > 0) dirs.push_back({a / len, b / len, c / len});
+      }
   constexpr int kSamples = 8;
   std::vector<Vec3> samples;
   samples.reserve(1 + dirs.size() * kSamples);
   samples.push_back(x);
-  for (std::size_t r = 0; r < dirs.size(); ++r) {
-    double reach = cell.reach(x, dirs[r]);
-    if (!std::isfinite(reach)) reach = 0.0;
+  for (const Vec3& d : dirs) {
+    const double reach = cell.reach(x, d);  // finite: d is a unit vector
     for (int i = 1; i <= kSamples; ++i) {
-      Vec3 q;
-      for (int k = 0; k < 3; ++k) q[k] = std::clamp(x[k] + reach * i / kSamples * dirs[r][k], lo[k], hi[k]);
-      samples.push_back(q);
+      const double t = reach * i / kSamples;
+      samples.push_back(cell.clamp({x[0] + t * d[0], x[1] + t * d[1], x[2] + t * d[2]}));
     }
   }
   return root_on_rays(samples, dirs.size(), kSamples, apex, error);
