@@ -6,6 +6,9 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 name="${1:-release}"
 shift || true
 jobs="$(nproc)"
+# ccache keys on paths relative to the checkout, so another clone of the same sources (CI's
+# fresh clone, a worktree) reuses what this machine has compiled already.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$root}" CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 cmake -S "$root" -B "$root/build/$name" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
 cmake --build "$root/build/$name" -j "$jobs"
 # `import genmod` for Debian's python3 without setting a path: a .pth file in its user site
