@@ -306,7 +306,25 @@ Store& store() {
 }
 
 
-// The node's static facts (inputs, possible errors, depth) from its operands.
+std::uint64_t mix_shape(std::uint64_t h, std::uint64_t v) noexcept {
+  h ^= v + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
+  return h * 0xBF58476D1CE4E5B9ull;
+}
+
+// The structural hash of a node (see Node::shape): no node id or operator id goes into it.
+std::uint64_t shape_of(const Node& n, std::span<const NodeId> operands) {
+  std::uint64_t h = mix_shape(0x243F6A8885A308D3ull, static_cast<std::uint64_t>(n.op));
+  std::uint64_t bits;
+  std::memcpy(&bits, &n.value, 8);
+  h = mix_shape(h, bits);
+  h = mix_shape(h, static_cast<std::uint32_t>(n.index));
+  if (n.op == Op::Custom) h = mix_shape(h, std::hash<std::string>{}(custom(n.custom).name()));
+  for (NodeId arg : operands)
+    if (arg != kNoNode) h = mix_shape(h, node(arg).shape);
+  return h;
+}
+
+// The node's static facts (inputs, possible errors, depth, shape) from its operands.
 Node prototype(Op op, std::span<const NodeId> operands, std::int32_t index, std::uint32_t custom_id, double value) {
   Node n{};
   n.op = op;
@@ -327,6 +345,7 @@ Node prototype(Op op, std::span<const NodeId> operands, std::int32_t index, std:
     n.depth = std::max(n.depth, child.depth + 1);
   }
   if (op == Op::IsError) n.may_error = false;  // error(h) itself never fails
+  n.shape = shape_of(n, operands);
   return n;
 }
 
@@ -412,6 +431,17 @@ NodeId var(int index) {
   return intern(Op::Var, kNoNode, kNoNode, kNoNode, index, 0.0);
 }
 
+namespace {
+
+// Commutative operands go in the order of their shapes, so the same expression is built the
+// same way whatever ids its operands happen to have.
+bool operand_after(NodeId a, NodeId b) noexcept {
+  const std::uint64_t sa = node(a).shape, sb = node(b).shape;
+  return sa != sb ? sb < sa : b < a;
+}
+
+}  // namespace
+
 NodeId make(Op op, NodeId a, NodeId b, NodeId c) {
   const int n_args = arity(op);
   if (op <= Op::Var || op > Op::Select || n_args == 0)
@@ -423,7 +453,7 @@ NodeId make(Op op, NodeId a, NodeId b, NodeId c) {
       throw std::invalid_argument("genmod: dag::make: bad operand " + std::to_string(k) + " for '" +
                                   std::string(op_name(op)) + "'");
   }
-  if (is_commutative(op) && b < a) std::swap(a, b);
+  if (is_commutative(op) && operand_after(a, b)) std::swap(a, b);
   // An operand returned as it is gets a new reference, like every result.
   auto same = [](NodeId id) {
     retain(id);

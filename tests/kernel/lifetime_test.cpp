@@ -12,10 +12,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <string>
 #include <thread>
 
 namespace genmod {
@@ -92,6 +94,29 @@ TEST(Lifetime, ReusedIdsNeverReturnStaleNodes) {
   // compare shapes without one).
   const Fn a = sin(x(0)) * 3.0 + x(1), b = sin(x(0)) * 3.0 + x(1);
   EXPECT_TRUE(identical(a, b));
+}
+
+// Ids are reused after reclamation, so which of two operands has the smaller id depends on
+// what the process built before. The tape (and so every search over it) must not: the same
+// expression compiles to the same clauses whichever operand got the smaller id.
+TEST(Lifetime, TapesDoNotDependOnWhatWasBuiltBefore) {
+  std::string tapes[2];
+  bool x40_first[2];
+  for (int order = 0; order < 2; ++order) {
+    // Two slots freed in a chosen order: the store reuses the last freed first, so x(40) and
+    // x(41) (coordinates no other test keeps alive) take them in opposite orders.
+    const NodeId p = dag::constant(123456.789), q = dag::constant(987654.321);
+    const NodeId lo = std::min(p, q), hi = std::max(p, q);
+    dag::release(order == 0 ? hi : lo);
+    dag::release(order == 0 ? lo : hi);
+    const Fn a = x(40), b = x(41);
+    x40_first[order] = a.node(0) < b.node(0);
+    const Fn c = sin(b) + cos(a);
+    const Fn f = max(a * b + c, min(a - b, b * c)) + (a + b) * (c + a);
+    tapes[order] = Tape(f, std::vector<int>{40, 41}).disassemble();
+  }
+  ASSERT_NE(x40_first[0], x40_first[1]) << "the test did not make the ids' order differ";
+  EXPECT_EQ(tapes[0], tapes[1]);
 }
 
 TEST(Lifetime, TapesKeepTheirOperatorsAlive) {

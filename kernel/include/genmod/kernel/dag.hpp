@@ -43,6 +43,11 @@ struct Node {
   double value;          // Const: the value
   std::uint64_t inputs;  // bit i set if the node depends on x(i)
   std::uint32_t depth;   // longest path to a leaf
+  // A hash of the node's structure (op, constant, coordinate, operator name, operands' shapes),
+  // independent of node ids. Ids are reused after reclamation, so they depend on what the
+  // process built before; the shape does not, and orders commutative operands (hence tapes,
+  // and the solvers' work on them) the same way in every process history.
+  std::uint64_t shape;
 };
 
 namespace dag {
@@ -56,7 +61,8 @@ std::size_t custom_count() noexcept;
 bool is_live(NodeId id) noexcept;
 
 // Node construction with the cheap simplifications: exact constant folding, x+0, x*1, x/1,
-// x-x (when x cannot raise an error), --x, x*x -> square(x), and commutative operand order.
+// x-x (when x cannot raise an error), --x, x*x -> square(x), and commutative operands in the
+// order of their shapes (ids only break a tie between different nodes of equal shape).
 // Each returns a new reference (see Lifetime above). Throws std::invalid_argument for a
 // coordinate outside [0, kMaxInputs) or an operand that is not a live node.
 NodeId constant(double value);
