@@ -42,6 +42,14 @@ Interval hull_of(const Interval& a, const Interval& b) {
   return hull(a, b);
 }
 
+// The products below run inside one RoundingScope on raw intervals: a protected operation
+// switches the rounding mode twice, and these loops make O(n^3) of them per box, which cost
+// more than evaluating the system and its Jacobian. Every operand is bounded (prepare()
+// checks), so the raw operations meet no 0 * inf.
+using Raw = interval_detail::Raw;
+Raw raw(const Interval& x) { return interval_detail::raw(x); }
+Raw raw(double x) { return Raw(x, x, true); }
+
 }  // namespace
 
 IntervalNewton::IntervalNewton(const Fn& system, Coordinates unknowns, Coordinates parameters)
@@ -95,13 +103,17 @@ bool IntervalNewton::prepare(std::span<const Interval> box) {
       y_[r * n + col] = inv(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(col));
 
   // M = Y J, b = Y F(c), outward rounded.
-  m_.assign(n * n, Interval(0.0));
-  b_.assign(n, Interval(0.0));
+  m_.resize(n * n);
+  b_.resize(n);
+  RoundingScope upward;
   for (std::size_t r = 0; r < n; ++r) {
-    for (std::size_t k = 0; k < n; ++k) {
-      const Interval y(y_[r * n + k]);
-      b_[r] = b_[r] + y * fc_[k];
-      for (std::size_t col = 0; col < n; ++col) m_[r * n + col] = m_[r * n + col] + y * jx_[k * n + col];
+    Raw b = raw(0.0);
+    for (std::size_t k = 0; k < n; ++k) b += raw(y_[r * n + k]) * raw(fc_[k]);
+    b_[r] = interval_detail::cook(b);
+    for (std::size_t col = 0; col < n; ++col) {
+      Raw m = raw(0.0);
+      for (std::size_t k = 0; k < n; ++k) m += raw(y_[r * n + k]) * raw(jx_[k * n + col]);
+      m_[r * n + col] = interval_detail::cook(m);
     }
   }
   return all_bounded(m_) && all_bounded(b_);
@@ -110,10 +122,12 @@ bool IntervalNewton::prepare(std::span<const Interval> box) {
 NewtonStatus IntervalNewton::contract(std::span<Interval> box) {
   if (!prepare(box)) return NewtonStatus::Skipped;
   const std::size_t n = n_;
+  RoundingScope upward;
   for (std::size_t i = 0; i < n; ++i) {
-    Interval s = b_[i];
+    Raw sum = raw(b_[i]);
     for (std::size_t j = 0; j < n; ++j)
-      if (j != i) s = s + m_[i * n + j] * (box[j] - Interval(c_[j]));
+      if (j != i) sum += raw(m_[i * n + j]) * (raw(box[j]) - raw(c_[j]));
+    const Interval s = interval_detail::cook(sum);
     if (s.is_empty() || !s.is_bounded()) continue;  // no information (never shrink on NaN)
     const IntervalPair q = extended_divide(-s, m_[i * n + i]);
     const Interval ci(c_[i]);
@@ -130,14 +144,13 @@ Box IntervalNewton::krawczyk(std::span<const Interval> box) {
   if (!prepare(box)) return {};
   const std::size_t n = n_;
   Box k(n);
+  RoundingScope upward;
   for (std::size_t i = 0; i < n; ++i) {
-    Interval s = Interval(c_[i]) - b_[i];
-    for (std::size_t j = 0; j < n; ++j) {
-      const Interval ij = Interval(i == j ? 1.0 : 0.0) - m_[i * n + j];
-      s = s + ij * (box[j] - Interval(c_[j]));
-    }
-    if (s.is_empty()) return {};
-    k[i] = s;
+    Raw s = raw(c_[i]) - raw(b_[i]);
+    for (std::size_t j = 0; j < n; ++j)
+      s += (raw(i == j ? 1.0 : 0.0) - raw(m_[i * n + j])) * (raw(box[j]) - raw(c_[j]));
+    k[i] = interval_detail::cook(s);
+    if (k[i].is_empty()) return {};
   }
   return k;
 }
