@@ -168,6 +168,14 @@ class Search {
   // value form is second order: boxes at the minimizer need not shrink to width delta.
   void build_lagrangian(const Fn& objective, std::span<const int> unknowns);
   void update_multipliers();
+  // The constraints active at a point (equalities, and inequalities within 1e-3 of 0), from
+  // the kkt_ values there, and least-squares multipliers for them (inequalities clipped at 0).
+  std::vector<std::size_t> active_constraints(std::span<const double> kkt_values) const;
+  std::vector<double> multipliers_for(std::span<const double> kkt_values, std::span<const std::size_t> active) const;
+  // Newton's method on the KKT conditions of the constraints active at q (see the definition).
+  std::optional<std::vector<double>> kkt_point(std::span<const double> q);
+  // Offers verified points at and just inside the KKT point near q.
+  void try_kkt_point(std::span<const double> q);
   double lagrangian_bound(Worker& w, std::span<const Interval> box);
   Bounds bound_objective(Worker& w, std::span<const Interval> box);
   // sup f at q when q is proven feasible and f is defined there.
@@ -176,6 +184,8 @@ class Search {
   // Rule 3 for exact equalities: a sub-box of `box` certified to hold a feasible point.
   void certify_in(Worker& w, std::span<const Interval> box, Child& c);
   void try_certified(std::span<const Interval> box);
+  // try_certified on a small box around q (exact equalities).
+  void try_certified_around(std::span<const double> q);
   void offer(double value, std::vector<double> point);
   // Bounds a child of a box; u_before is u at the start of the split (u only decreases).
   Child bound_child(Worker& w, Box box, double parent_key, const Interval& parent_f, double u_before);
@@ -207,6 +217,8 @@ class Search {
   std::vector<std::uint8_t> g_equality_;
   std::optional<InclusionFunction> lagrangian_;
   std::optional<Tape> kkt_;       // g_i, grad f, grad g_i at a point (over the unknowns)
+  std::optional<Tape> kkt_system_;  // grad_x L, g_i over (unknowns, multipliers): Newton's system
+  GradientEvaluator kkt_jacobian_;
   std::vector<double> lambda_;    // current multipliers (all 0: no bound)
   bool multipliers_stale_ = false;
   PointEvaluator pe_;
@@ -266,9 +278,14 @@ void Search::build_lagrangian(const Fn& objective, std::span<const int> unknowns
       for (int u : unknowns) parts.push_back(derivative(g, u));
     kkt_.emplace(cat(parts), unknowns);
     lagrangian_.emplace(l, inputs);
+    std::vector<Fn> system;
+    for (int u : unknowns) system.push_back(derivative(l, u));
+    system.insert(system.end(), g_.begin(), g_.end());
+    kkt_system_.emplace(cat(system), inputs);
   } catch (const std::exception&) {  // no derivative: no Lagrangian bound
     g_.clear();
     kkt_.reset();
+    kkt_system_.reset();
     lagrangian_.reset();
     return;
   }
@@ -281,13 +298,21 @@ void Search::build_lagrangian(const Fn& objective, std::span<const int> unknowns
 void Search::update_multipliers() {
   multipliers_stale_ = false;
   if (!lagrangian_ || best_.empty()) return;
-  const std::size_t n = best_.size(), m = g_.size();
   const auto v = pe_.eval(*kkt_, best_);
+  lambda_ = multipliers_for(v, active_constraints(v));
+}
+
+std::vector<std::size_t> Search::active_constraints(std::span<const double> v) const {
   std::vector<std::size_t> active;
-  for (std::size_t i = 0; i < m; ++i)
+  for (std::size_t i = 0; i < g_.size(); ++i)
     if (g_equality_[i] || (std::isfinite(v[i]) && v[i] >= -1e-3)) active.push_back(i);
-  std::fill(lambda_.begin(), lambda_.end(), 0.0);
-  if (active.empty()) return;
+  return active;
+}
+
+std::vector<double> Search::multipliers_for(std::span<const double> v, std::span<const std::size_t> active) const {
+  const std::size_t n = root_.size(), m = g_.size();
+  std::vector<double> lambda(m, 0.0);
+  if (active.empty()) return lambda;
   Eigen::MatrixXd a(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(active.size()));
   Eigen::VectorXd b(static_cast<Eigen::Index>(n));
   for (std::size_t j = 0; j < n; ++j) {
@@ -295,13 +320,100 @@ void Search::update_multipliers() {
     for (std::size_t k = 0; k < active.size(); ++k)
       a(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(k)) = v[m + n + active[k] * n + j];
   }
-  if (!a.allFinite() || !b.allFinite()) return;
+  if (!a.allFinite() || !b.allFinite()) return lambda;
   const Eigen::VectorXd lam = a.colPivHouseholderQr().solve(b);
   for (std::size_t k = 0; k < active.size(); ++k) {
     const double l = lam(static_cast<Eigen::Index>(k));
-    if (!std::isfinite(l)) return std::fill(lambda_.begin(), lambda_.end(), 0.0);
-    lambda_[active[k]] = g_equality_[active[k]] ? l : std::max(l, 0.0);
+    if (!std::isfinite(l)) return std::vector<double>(m, 0.0);
+    lambda[active[k]] = g_equality_[active[k]] ? l : std::max(l, 0.0);
   }
+  return lambda;
+}
+
+// Projected descent crawls along active constraints, so the point it returns near a
+// constrained minimum can be 1e-3 away, and u that far above f*: every box around the
+// minimizer whose bound is below u - delta must then be split. Newton's method on
+// grad f + sum_{i in A} lambda_i grad g_i = 0, g_A = 0 (A: the constraints active at q) goes
+// from there to the KKT point to machine precision, quadratically. Not rigorous, and it need
+// not be: the caller verifies what it offers. Nothing when Newton does not converge, leaves
+// the box, or ends with a negative inequality multiplier (then A was wrong).
+std::optional<std::vector<double>> Search::kkt_point(std::span<const double> q) {
+  if (!kkt_system_ || q.size() != root_.size()) return std::nullopt;
+  const std::size_t n = q.size(), m = g_.size();
+  const auto v = pe_.eval(*kkt_, q);
+  const std::vector<std::size_t> active = active_constraints(v);
+  std::vector<double> z(q.begin(), q.end());
+  const std::vector<double> lambda = multipliers_for(v, active);
+  z.insert(z.end(), lambda.begin(), lambda.end());
+  // Unknowns: x and the multipliers of A; equations: grad_x L (n) and g_A.
+  std::vector<std::size_t> columns(n), rows(n);
+  for (std::size_t j = 0; j < n; ++j) columns[j] = rows[j] = j;
+  for (std::size_t i : active) {
+    columns.push_back(n + i);
+    rows.push_back(n + i);
+  }
+  const auto k = static_cast<Eigen::Index>(rows.size());
+  Eigen::MatrixXd jac(k, k);
+  Eigen::VectorXd r(k);
+  for (int iter = 0; iter < 30; ++iter) {
+    kkt_jacobian_.eval(*kkt_system_, z);
+    const auto values = kkt_jacobian_.values();
+    const auto jv = kkt_jacobian_.jacobian();
+    for (Eigen::Index a = 0; a < k; ++a) {
+      r(a) = values[rows[static_cast<std::size_t>(a)]];
+      for (Eigen::Index b = 0; b < k; ++b)
+        jac(a, b) = jv[rows[static_cast<std::size_t>(a)] * (n + m) + columns[static_cast<std::size_t>(b)]];
+    }
+    if (!r.allFinite() || !jac.allFinite()) return std::nullopt;
+    const Eigen::VectorXd step = jac.fullPivLu().solve(-r);
+    if (!step.allFinite()) return std::nullopt;
+    double size = 0.0, scale = 1.0;
+    for (Eigen::Index b = 0; b < k; ++b) {
+      double& zb = z[columns[static_cast<std::size_t>(b)]];
+      zb += step(b);
+      size = std::max(size, std::abs(step(b)));
+      scale = std::max(scale, std::abs(zb));
+    }
+    if (size > 1e-14 * scale) continue;
+    for (std::size_t i : active)
+      if (!g_equality_[i] && z[n + i] < 0.0) return std::nullopt;
+    z.resize(n);
+    for (std::size_t j = 0; j < n; ++j)
+      if (!root_[j].contains(z[j])) return std::nullopt;
+    return z;
+  }
+  return std::nullopt;
+}
+
+// The KKT point itself is on its active inequalities, where no interval evaluation can prove
+// g <= 0 (or g < 0) true; points a few ulps to 1e-7 inside, along -grad g of the active
+// inequalities, can be, at a cost of that distance times |grad f| in u.
+void Search::try_kkt_point(std::span<const double> q) {
+  const std::optional<std::vector<double>> p = kkt_point(q);
+  if (!p) return;
+  const std::size_t n = p->size(), m = g_.size();
+  const auto v = pe_.eval(*kkt_, *p);
+  std::vector<double> inward(n, 0.0);
+  double scale = 1.0;
+  for (std::size_t j = 0; j < n; ++j) scale = std::max(scale, std::abs((*p)[j]));
+  for (std::size_t i : active_constraints(v)) {
+    if (g_equality_[i]) continue;
+    double norm = 0.0;
+    for (std::size_t j = 0; j < n; ++j) norm += v[m + n + i * n + j] * v[m + n + i * n + j];
+    norm = std::sqrt(norm);
+    if (!(norm > 0.0) || !std::isfinite(norm)) continue;
+    for (std::size_t j = 0; j < n; ++j) inward[j] -= v[m + n + i * n + j] / norm;
+  }
+  try_point(*p);
+  for (double t : {1e-14, 1e-12, 1e-10, 1e-8, 1e-7}) {
+    std::vector<double> inside(*p);
+    for (std::size_t j = 0; j < n; ++j) inside[j] += t * scale * inward[j];
+    const std::optional<double> value = point_value(workers_[0], inside);
+    if (!value) continue;
+    offer(*value, std::move(inside));
+    break;
+  }
+  if (workers_[0].certifier) try_certified_around(*p);
 }
 
 double Search::lagrangian_bound(Worker& w, std::span<const Interval> box) {
@@ -370,6 +482,18 @@ void Search::try_certified(std::span<const Interval> box) {
   if (!c.certified) return;
   ++result_.certified_points;
   if (c.certified_value) offer(*c.certified_value, std::move(c.certified_point));
+}
+
+void Search::try_certified_around(std::span<const double> q) {
+  if (q.size() != root_.size()) return;
+  Box around(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const double r = 1e-7 * (1.0 + std::abs(q[i]));
+    if (!std::isfinite(q[i])) return;
+    around[i] = intersect(Interval(q[i] - r, q[i] + r), root_[i]);
+    if (around[i].is_empty()) return;
+  }
+  try_certified(around);
 }
 
 Child Search::bound_child(Worker& w, Box box, double parent_key, const Interval& parent_f, double u_before) {
@@ -536,16 +660,8 @@ MinimizeResult Search::run() {
         ++result_.local_searches;
         const std::vector<double> q = local_->run(midpoint(e.box));
         try_point(q);
-        if (workers_[0].certifier && q.size() == root_.size()) {  // a small box around the local minimum
-          Box around(q.size());
-          bool inside = true;
-          for (std::size_t i = 0; i < q.size(); ++i) {
-            const double r = 1e-7 * (1.0 + std::abs(q[i]));
-            around[i] = intersect(Interval(q[i] - r, q[i] + r), root_[i]);
-            inside = inside && std::isfinite(q[i]) && !around[i].is_empty();
-          }
-          if (inside) try_certified(around);
-        }
+        if (workers_[0].certifier) try_certified_around(q);
+        try_kkt_point(q);
       }
       if (opt_.monotonicity_test && !monotonicity_test(e)) {
         step_callback();
