@@ -30,7 +30,7 @@ std::string_view status_name(SolutionStatus s) noexcept {
   return "?";
 }
 
-std::size_t SolveResult::count(SolutionStatus s) const noexcept {
+std::size_t SolveResult::box_count(SolutionStatus s) const noexcept {
   return static_cast<std::size_t>(
       std::count_if(boxes.begin(), boxes.end(), [s](const SolutionBox& b) { return b.status == s; }));
 }

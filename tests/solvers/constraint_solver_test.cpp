@@ -204,7 +204,7 @@ TEST(ConstraintSolver, LimitsAreReported) {
   SolveResult r = solve(circle, kU, kSquare, o);
   EXPECT_EQ(r.report.limit, LimitHit::MaxBoxes);
   EXPECT_EQ(r.report.boxes_processed, 50u);
-  EXPECT_GT(r.count(SolutionStatus::Unexplored), 0u);
+  EXPECT_GT(r.box_count(SolutionStatus::Unexplored), 0u);
   for (int i = 0; i < 360; ++i) {
     const double t = 2 * std::numbers::pi * i / 360;
     EXPECT_TRUE(covered(r, {std::cos(t), std::sin(t)}, 1e-15));
@@ -267,9 +267,9 @@ TEST(ConstraintSolver, DepthLimitedBoxesAreUnexplored) {
     const SolveResult r = solve(c, kU, kSquare, o);
     EXPECT_EQ(r.report.limit, LimitHit::MaxDepth);
     EXPECT_FALSE(r.complete());
-    EXPECT_GT(r.count(SolutionStatus::Unexplored), 0u);
-    EXPECT_EQ(r.count(SolutionStatus::Possible), 0u);
-    EXPECT_EQ(r.count(SolutionStatus::Boundary), 0u);
+    EXPECT_GT(r.box_count(SolutionStatus::Unexplored), 0u);
+    EXPECT_EQ(r.box_count(SolutionStatus::Possible), 0u);
+    EXPECT_EQ(r.box_count(SolutionStatus::Boundary), 0u);
     for (const SolutionBox& b : r.boxes) {
       if (b.status == SolutionStatus::Unexplored) {
         EXPECT_EQ(b.depth, 6);

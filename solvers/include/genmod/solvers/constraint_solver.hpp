@@ -130,11 +130,11 @@ struct SolveResult {
 
   // True when no limit was hit (every box was decided or accepted).
   bool complete() const noexcept { return report.limit == LimitHit::None; }
-  // Boxes with status s. Not the number of solutions: count(CertifiedUnique) counts boxes
-  // certified one by one, and a solution certified only through its component (Krawczyk on
-  // the component's hull, when Newton leaves boxes as wide as their Krawczyk image) sits in
-  // Possible boxes. The number of certified solutions is unique_components().
-  std::size_t count(SolutionStatus s) const noexcept;
+  // The number of boxes with status s (named apart from the number of solutions, which it is
+  // not: one solution may be covered by several boxes, and a solution certified only through
+  // its component, by Krawczyk on the component's hull, sits in Possible boxes). The number of
+  // certified solutions is unique_components().
+  std::size_t box_count(SolutionStatus s) const noexcept;
   // Components certified to hold exactly one solution each (disjoint): the number of
   // certified solutions.
   std::size_t unique_components() const noexcept;
