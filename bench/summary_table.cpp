@@ -58,6 +58,7 @@ void SummaryReporter::print_table(std::FILE* out) const {
   const double genmod = counter("BM_IntervalGenmod", "time/clause") * 1e9;
   const double pair = counter("BM_IntervalPairBaseline", "time/clause") * 1e9;
   const double boost = counter("BM_IntervalBoostProtected", "time/clause") * 1e9;
+  const double prune = counter("BM_SimplifyGenmod", "time/clause") * 1e9;
   const double render1 = seconds("BM_RenderProspero/threads:1") * 1e3;
   const double render2 = seconds("BM_RenderProspero/threads:2") * 1e3;
 
@@ -70,6 +71,8 @@ void SummaryReporter::print_table(std::FILE* out) const {
   row(out, "interval evaluation: Boost, protected per op", boost, " ns/clause");
   row(out, "  ratio genmod / pair of doubles", genmod / pair, "x", "<= 1.5x");
   row(out, "  ratio Boost protected / genmod", boost / genmod, "x", "about 10x");
+  row(out, "tape pruning (simplify), same tape and boxes", prune, " ns/clause");
+  row(out, "  ratio pruning / interval evaluation", prune / genmod, "x", "a small fraction");
   row(out, "render 1024x1024, 1 thread", render1, " ms");
   row(out, "render 1024x1024, 2 threads", render2, " ms", "< 50 ms");
   row(out, "  tape left in the deepest interval tiles", counter("BM_RenderProspero/threads:2", "deepest_tile_tape") * 100,
