@@ -165,6 +165,7 @@ void TapeSimplifier::prepare(std::size_t num_values, std::size_t length) {
 // one-sided, i.e. whether the tape changes (a tape never holds dead clauses). No branch per
 // clause: alias_ is the identity for the others.
 bool TapeSimplifier::note_aliases(const Source& src, std::span<const std::uint8_t> choices) {
+  clean_ = false;  // until rebuild() has undone the aliases
   std::uint8_t any = kKeep;
   for (std::size_t i = 0; i < choices.size(); ++i) {
     const Clause& c = src.ssa[i];
@@ -172,6 +173,7 @@ bool TapeSimplifier::note_aliases(const Source& src, std::span<const std::uint8_
     any |= o;
     alias_[c.out] = alias_[field(c, o & 3u)];  // kKeep and kToImmediate: itself
   }
+  if (any == kKeep) clean_ = true;  // every alias_ entry was written with itself
   return any != kKeep;
 }
 
@@ -182,7 +184,7 @@ bool TapeSimplifier::note_aliases(const Source& src, std::span<const std::uint8_
 // kNone and alias_ the identity again: every value met is defined further back on the tape.
 std::shared_ptr<TapeData> TapeSimplifier::rebuild(const Source& src, std::span<const std::uint8_t> choices) {
   const std::size_t n = src.ssa.size();
-  prepare(src.common->num_values, n);
+  if (clean_) prepare(src.common->num_values, n);  // else note_aliases() has prepared
   clean_ = false;
   free_.resize(n + 1);  // at most one register per value
   calls_.clear();

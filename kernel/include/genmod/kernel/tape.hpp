@@ -85,7 +85,7 @@ class TapeSimplifier {
   };
   std::vector<EmittedCall> calls_;            // last first
   std::vector<std::uint32_t> call_regs_, call_values_;
-  bool clean_ = true;  // false while a rebuild runs (an exception leaves the arrays to reset)
+  bool clean_ = true;  // false from note_aliases() to the end of rebuild(): after an exception, prepare() resets
 };
 
 class Tape {
