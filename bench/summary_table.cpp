@@ -53,11 +53,17 @@ double SummaryReporter::seconds(const std::string& name) const {
   return run ? run->real_accumulated_time / static_cast<double>(run->iterations) : kMissing;
 }
 
+double SummaryReporter::cpu_seconds(const std::string& name) const {
+  const Run* run = find(name);
+  return run ? run->cpu_accumulated_time / static_cast<double>(run->iterations) : kMissing;
+}
+
 void SummaryReporter::print_table(std::FILE* out) const {
   const double batch = counter("BM_BatchProspero", "clause_evals/s");
   const double genmod = counter("BM_IntervalGenmod", "time/clause") * 1e9;
   const double pair = counter("BM_IntervalPairBaseline", "time/clause") * 1e9;
   const double boost = counter("BM_IntervalBoostProtected", "time/clause") * 1e9;
+  const double prune = counter("BM_SimplifyGenmod", "time/clause") * 1e9;
   const double render1 = seconds("BM_RenderProspero/threads:1") * 1e3;
   const double render2 = seconds("BM_RenderProspero/threads:2") * 1e3;
 
@@ -70,8 +76,15 @@ void SummaryReporter::print_table(std::FILE* out) const {
   row(out, "interval evaluation: Boost, protected per op", boost, " ns/clause");
   row(out, "  ratio genmod / pair of doubles", genmod / pair, "x", "<= 1.5x");
   row(out, "  ratio Boost protected / genmod", boost / genmod, "x", "about 10x");
+  row(out, "tape pruning (simplify), same tape and boxes", prune, " ns/clause");
+  row(out, "  ratio pruning / interval evaluation", prune / genmod, "x", "a small fraction");
   row(out, "render 1024x1024, 1 thread", render1, " ms");
   row(out, "render 1024x1024, 2 threads", render2, " ms", "< 50 ms");
+  row(out, "  speed-up, wall time 1 thread / 2 threads", render1 / render2, "x", ">= 1.8x");
+  // Process CPU time: above 1 when the threads do extra work (contention), whatever else
+  // runs on the machine; a low speed-up at a ratio near 1 means the cores were not free.
+  row(out, "  CPU time 2 threads / 1 thread", cpu_seconds("BM_RenderProspero/threads:2") /
+      cpu_seconds("BM_RenderProspero/threads:1"), "x", "about 1x");
   row(out, "  tape left in the deepest interval tiles", counter("BM_RenderProspero/threads:2", "deepest_tile_tape") * 100,
       "% of the clauses");
   row(out, "  tape left for per-pixel evaluation", counter("BM_RenderProspero/threads:2", "pixel_tape") * 100,

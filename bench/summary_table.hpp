@@ -25,6 +25,7 @@ class SummaryReporter : public benchmark::ConsoleReporter {
   const Run* find(const std::string& name) const;
   double counter(const std::string& name, const std::string& counter_name) const;  // NaN if absent
   double seconds(const std::string& name) const;                                   // per iteration; NaN if absent
+  double cpu_seconds(const std::string& name) const;                               // process CPU per iteration
 
   // By benchmark name without the time-type suffix ("BM_RenderProspero/threads:2"); with
   // repetitions, the fastest run, the least disturbed by other load on the machine.

@@ -4,182 +4,293 @@
 #include "genmod/kernel/custom_op.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
+#include <cstring>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
 
 namespace genmod {
 
-struct Tape::Data {
-  std::vector<Clause> ssa, reg;
-  std::shared_ptr<const std::vector<double>> constants;
+namespace {
+
+constexpr std::uint32_t kNone = 0xffffffffu;      // no register
+constexpr std::uint32_t kCallLive = 0xfffffffeu;  // a Call some CallOut needs (calls have no register)
+
+// What a choice does to its clause.
+enum Outcome : std::uint8_t {
+  kKeep = 0,                     // the clause stays
+  kToA = 1, kToB = 2, kToC = 3,  // the clause is forwarded to its operand a / b / c
+  kToImmediate = 4               // min / max with a constant where the constant wins: that constant
+};
+
+// Outcome by opcode and choice (a table, as the choices of a tape follow no pattern a branch
+// predictor could learn).
+constexpr auto kOutcomes = [] {
+  std::array<std::array<std::uint8_t, 4>, 256> t{};
+  const auto set = [&](Op op, Outcome first, Outcome second) {
+    t[static_cast<std::size_t>(op)][kChoiceFirst] = first;
+    t[static_cast<std::size_t>(op)][kChoiceSecond] = second;
+  };
+  set(Op::Min, kToA, kToB);
+  set(Op::Max, kToA, kToB);
+  set(Op::MinImm, kToA, kToImmediate);
+  set(Op::MaxImm, kToA, kToImmediate);
+  set(Op::Select, kToB, kToC);
+  return t;
+}();
+
+std::uint8_t outcome(const Clause& c, std::uint8_t choice) noexcept {
+  return kOutcomes[static_cast<std::size_t>(c.op)][choice & 3u];
+}
+
+// Field k of out, a, b, c (k = kKeep, kToA, kToB, kToC), read straight from the clause: a
+// branch per clause would be mispredicted, and copying the four into an array would store
+// and load them back at once (a store-forwarding stall).
+std::uint32_t field(const Clause& c, unsigned k) noexcept {
+  static_assert(offsetof(Clause, a) == offsetof(Clause, out) + 4 && offsetof(Clause, b) == offsetof(Clause, out) + 8 &&
+                offsetof(Clause, c) == offsetof(Clause, out) + 12);
+  std::uint32_t v;
+  std::memcpy(&v, reinterpret_cast<const char*>(&c) + offsetof(Clause, out) + 4 * k, sizeof v);
+  return v;
+}
+
+// Register operands by opcode (arity() as a table).
+constexpr auto kArity = [] {
+  std::array<std::uint8_t, 256> t{};
+  for (std::size_t op = 0; op < t.size(); ++op) t[op] = static_cast<std::uint8_t>(arity(static_cast<Op>(op)));
+  return t;
+}();
+
+}  // namespace
+
+// What a tape shares with every tape pruned from it.
+struct TapeCommon {
+  std::vector<double> constants;
   std::vector<int> inputs;
-  std::vector<std::uint32_t> ssa_outputs, reg_outputs;
-  std::vector<CallSite> calls;
   // The operators the call sites point to, kept alive as long as the tape (and the tapes
   // simplified from it) even when the Fn it was compiled from is gone.
-  std::shared_ptr<const std::vector<std::shared_ptr<const CustomOp>>> ops;
-  std::vector<std::uint32_t> ssa_call_args, reg_call_args;
-  std::uint32_t num_registers = 0;
+  std::vector<std::shared_ptr<const CustomOp>> ops;
+  std::uint32_t num_values = 0;  // SSA ids are below this
   std::uint32_t num_slots = 0;
-  bool has_choices = false;
 };
+
+// Both forms in one vector each, so a pruned tape costs few allocations.
+struct TapeData {
+  std::shared_ptr<const TapeCommon> common;
+  std::vector<Clause> clauses;           // register form [0, size), then SSA form [size, 2 size)
+  std::vector<std::uint32_t> outputs;    // output registers, then output values
+  std::vector<CallSite> calls;
+  std::vector<std::uint32_t> call_args;  // argument registers, then argument values
+  std::uint32_t num_registers = 0;
+  bool has_choices = false;
+
+  std::size_t size() const noexcept { return clauses.size() / 2; }
+  std::span<const Clause> reg() const noexcept { return std::span(clauses).first(size()); }
+  std::span<const Clause> ssa() const noexcept { return std::span(clauses).subspan(size()); }
+  std::span<const std::uint32_t> reg_outputs() const noexcept { return std::span(outputs).first(outputs.size() / 2); }
+  std::span<const std::uint32_t> ssa_outputs() const noexcept { return std::span(outputs).subspan(outputs.size() / 2); }
+  std::span<const std::uint32_t> reg_call_args() const noexcept { return std::span(call_args).first(call_args.size() / 2); }
+  std::span<const std::uint32_t> ssa_call_args() const noexcept { return std::span(call_args).subspan(call_args.size() / 2); }
+};
+
+// The SSA form a rebuild reads: a tape's, or the compiler's before registers are allocated.
+struct TapeSimplifier::Source {
+  std::span<const Clause> ssa;
+  std::span<const std::uint32_t> outputs;  // values
+  std::span<const CallSite> calls;
+  std::span<const std::uint32_t> call_args;  // values
+  std::shared_ptr<const TapeCommon> common;
+};
+
+// Linear-scan register allocation walking backward over a tape: a value takes a register at
+// its last use and gives it back at its definition. Works on the simplifier's arrays through
+// plain pointers, so the hot loop keeps its state in registers.
+class TapeSimplifier::Registers {
+ public:
+  // free_stack: room for one register per value, from free_stack[1].
+  Registers(std::uint32_t* reg_of, std::uint32_t* free_stack) : reg_of_(reg_of), free_(free_stack) {}
+
+  bool live(std::uint32_t v) const noexcept { return reg_of_[v] != kNone; }
+  // A use of v: its register.
+  std::uint32_t use(std::uint32_t v) noexcept {
+    std::uint32_t& r = reg_of_[v];
+    if (r == kNone) r = top_ > 0 ? free_[top_--] : next_++;
+    return r;
+  }
+  // The definition of live value v: its register, free again before this clause.
+  std::uint32_t release(std::uint32_t v) noexcept {
+    const std::uint32_t r = reg_of_[v];
+    reg_of_[v] = kNone;
+    if (r != kCallLive) free_[++top_] = r;
+    return r;
+  }
+  // A Call clause needed by one of its outputs (calls have no register).
+  void keep_call(std::uint32_t call) noexcept {
+    if (reg_of_[call] == kNone) reg_of_[call] = kCallLive;
+  }
+  std::uint32_t count() const noexcept { return next_; }
+
+ private:
+  std::uint32_t* reg_of_;
+  std::uint32_t* free_;  // the free registers: free_[1 .. top_]
+  std::uint32_t top_ = 0;
+  std::uint32_t next_ = 0;
+};
+
+void TapeSimplifier::prepare(std::size_t num_values, std::size_t length) {
+  if (!clean_) {  // a rebuild was interrupted by an exception
+    std::fill(reg_of_.begin(), reg_of_.end(), kNone);
+    std::iota(alias_.begin(), alias_.end(), 0u);
+    clean_ = true;
+  }
+  if (reg_of_.size() < num_values) {
+    const std::size_t old = alias_.size();
+    reg_of_.resize(num_values, kNone);
+    alias_.resize(num_values);
+    std::iota(alias_.begin() + static_cast<std::ptrdiff_t>(old), alias_.end(), static_cast<std::uint32_t>(old));
+  }
+  if (reg_out_.size() < length) {
+    reg_out_.resize(length);
+    ssa_out_.resize(length);
+  }
+}
+
+// Forward: points alias_ of each clause a one-sided choice forwards at the value it stands for
+// (chains followed, as its operand was resolved before). Returns whether some choice is
+// one-sided, i.e. whether the tape changes (a tape never holds dead clauses). No branch per
+// clause: alias_ is the identity for the others.
+bool TapeSimplifier::note_aliases(const Source& src, std::span<const std::uint8_t> choices) {
+  clean_ = false;  // until rebuild() has undone the aliases
+  std::uint8_t any = kKeep;
+  for (std::size_t i = 0; i < choices.size(); ++i) {
+    const Clause& c = src.ssa[i];
+    const std::uint8_t o = outcome(c, choices[i]);
+    any |= o;
+    alias_[c.out] = alias_[field(c, o & 3u)];  // kKeep and kToImmediate: itself
+  }
+  if (any == kKeep) clean_ = true;  // every alias_ entry was written with itself
+  return any != kKeep;
+}
+
+// One backward pass: drops values nothing needs (and the clauses note_aliases forwarded, which
+// nothing refers to any more), allocates registers by linear scan (a value's register is
+// taken at its last use and released at its definition) and writes both forms of the kept
+// clauses from the end of reg_out_ / ssa_out_, so they come out in order. Leaves reg_of_ all
+// kNone and alias_ the identity again: every value met is defined further back on the tape.
+std::shared_ptr<TapeData> TapeSimplifier::rebuild(const Source& src, std::span<const std::uint8_t> choices) {
+  const std::size_t n = src.ssa.size();
+  if (clean_) prepare(src.common->num_values, n);  // else note_aliases() has prepared
+  clean_ = false;
+  free_.resize(n + 1);  // at most one register per value
+  calls_.clear();
+  call_regs_.clear();
+  call_values_.clear();
+  Registers regs(reg_of_.data(), free_.data());
+  std::uint32_t* const alias = alias_.data();
+
+  auto out = std::make_shared<TapeData>();
+  out->common = src.common;
+  out->outputs.resize(2 * src.outputs.size());
+  // Outputs are live to the end: they take their registers first.
+  for (std::size_t j = 0; j < src.outputs.size(); ++j) {
+    const std::uint32_t v = alias[src.outputs[j]];
+    out->outputs[j] = regs.use(v);
+    out->outputs[src.outputs.size() + j] = v;
+  }
+  Clause* const reg_out = reg_out_.data();
+  Clause* const ssa_out = ssa_out_.data();
+  std::size_t w = n;  // reg_out[w, n) and ssa_out[w, n) are the kept clauses
+  bool has_choices = false;
+  for (std::size_t i = n; i-- > 0;) {
+    const std::uint32_t id = src.ssa[i].out;
+    alias[id] = id;                 // all its uses are behind us
+    if (!regs.live(id)) continue;  // dead (or forwarded to an operand)
+    --w;
+    // Both forms are written in place: a Clause built in registers and copied out whole
+    // would be stored field by field and loaded back at once (a store-forwarding stall).
+    Clause& ssa = ssa_out[w] = src.ssa[i];
+    if (outcome(ssa, choices[i]) == kToImmediate) ssa = Clause{Op::Const, {}, id, ssa.b, 0, 0};
+    Clause& reg = reg_out[w] = ssa;
+    reg.out = regs.release(id);
+    if (ssa.op >= Op::Call) [[unlikely]] {
+      keep_call_or_out(src, ssa, w, regs, reg);
+    } else {
+      const int ar = kArity[static_cast<std::size_t>(ssa.op)];
+      if (ar >= 1) reg.a = regs.use(ssa.a = alias[ssa.a]);
+      if (ar >= 2) reg.b = regs.use(ssa.b = alias[ssa.b]);
+      if (ar >= 3) reg.c = regs.use(ssa.c = alias[ssa.c]);
+    }
+    has_choices = has_choices || has_choice(ssa.op);
+  }
+
+  out->clauses.reserve(2 * (n - w));
+  out->clauses.insert(out->clauses.end(), reg_out + w, reg_out + n);
+  out->clauses.insert(out->clauses.end(), ssa_out + w, ssa_out + n);
+  if (!calls_.empty()) finish_calls(src, w, *out);
+  out->num_registers = std::max<std::uint32_t>(regs.count(), 1);
+  out->has_choices = has_choices;
+  clean_ = true;
+  return out;
+}
+
+// Call and CallOut clauses (rare): a call has no register and uses its arguments; an output
+// keeps its call (an ordering dependency).
+void TapeSimplifier::keep_call_or_out(const Source& src, const Clause& c, std::size_t position, Registers& regs,
+                                      Clause& reg) {
+  if (c.op == Op::CallOut) {
+    regs.keep_call(c.b);
+    return;
+  }
+  reg.out = 0;
+  const CallSite& cs = src.calls[c.a];
+  calls_.push_back({static_cast<std::uint32_t>(position), c.a, static_cast<std::uint32_t>(call_regs_.size())});
+  for (std::uint32_t k = 0; k < cs.num_args; ++k) {
+    const std::uint32_t v = alias_[src.call_args[cs.first_arg + k]];
+    call_regs_.push_back(regs.use(v));
+    call_values_.push_back(v);
+  }
+}
+
+// Numbers the kept calls in tape order and points their clauses at them; `first` is where
+// the kept clauses start in reg_out_.
+void TapeSimplifier::finish_calls(const Source& src, std::size_t first, TapeData& out) {
+  const std::size_t m = out.size();
+  std::vector<std::uint32_t> regs, values;
+  for (std::size_t j = calls_.size(); j-- > 0;) {
+    const EmittedCall& e = calls_[j];
+    CallSite cs = src.calls[e.call];
+    cs.first_arg = static_cast<std::uint32_t>(regs.size());
+    regs.insert(regs.end(), call_regs_.begin() + e.first_arg, call_regs_.begin() + e.first_arg + cs.num_args);
+    values.insert(values.end(), call_values_.begin() + e.first_arg, call_values_.begin() + e.first_arg + cs.num_args);
+    const auto index = static_cast<std::uint32_t>(out.calls.size());
+    out.calls.push_back(cs);
+    out.clauses[e.position - first].a = index;
+    out.clauses[m + e.position - first].a = index;
+  }
+  out.call_args = std::move(regs);
+  out.call_args.insert(out.call_args.end(), values.begin(), values.end());
+}
 
 namespace {
 
-constexpr std::uint32_t kUnused = 0xffffffffu;
-
-// Rebuilds a tape from SSA clauses in one backward pass: drops values nothing needs, forwards
-// min / max / select clauses whose choice is one-sided to the chosen operand, allocates
-// registers (linear scan, backward: a value's register is taken at its last use and released
-// at its definition), and renumbers the SSA form. `choices` may be empty (nothing collapses):
-// that is how a freshly compiled tape gets its registers. Sets *changed if a clause was
-// dropped or collapsed.
-class Rebuilder {
- public:
-  Rebuilder(const Tape::Data& src, std::span<const std::uint8_t> choices) : src_(src), choices_(choices) {}
-
-  std::shared_ptr<Tape::Data> run(bool* changed) {
-    const std::size_t n = src_.ssa.size();
-    resolve_aliases();
-    needed_.assign(n, 0);
-    reg_of_.assign(n, kUnused);
-    auto out = std::make_shared<Tape::Data>();
-    out->constants = src_.constants;
-    out->ops = src_.ops;
-    out->inputs = src_.inputs;
-    out->num_slots = src_.num_slots;
-    // Outputs are live to the end: they take their registers first.
-    for (std::uint32_t v : src_.ssa_outputs) use(resolved_[v]);
-    std::vector<Clause> rev_reg, rev_ssa;  // emitted clauses, last first
-    std::vector<std::uint32_t> rev_call_args;
-    bool any_dropped = false;
-    for (std::size_t i = n; i-- > 0;) {
-      if (!needed_[i]) {
-        any_dropped = true;
-        continue;
-      }
-      Clause ssa = src_.ssa[i];
-      Clause reg = ssa;
-      if (collapses_to_immediate(i)) {
-        // min/max with a constant, where the constant wins over the whole box.
-        any_dropped = true;
-        ssa = reg = Clause{Op::Const, {}, 0, ssa.b, 0, 0};
-      }
-      // The result's register is free before this definition (walking backward).
-      reg.out = reg_of_[i];
-      if (reg.op != Op::Call) free_.push_back(reg_of_[i]);
-      switch (reg.op) {
-        case Op::Call: {
-          const CallSite& cs = src_.calls[ssa.a];
-          for (std::uint32_t k = 0; k < cs.num_args; ++k) use(resolved_[src_.ssa_call_args[cs.first_arg + k]]);
-          reg.out = 0;
-          break;
-        }
-        case Op::CallOut: needed_[ssa.b] = 1; break;  // keeps its call (an ordering dependency)
-        default: {
-          const int ar = arity(ssa.op);
-          const bool imm = ssa.op >= Op::AddImm && ssa.op <= Op::MaxImm;
-          if (ar >= 1) reg.a = use(ssa.a = resolved_[ssa.a]);
-          if (ar >= 2 && !imm) reg.b = use(ssa.b = resolved_[ssa.b]);
-          if (ar >= 3) reg.c = use(ssa.c = resolved_[ssa.c]);
-        }
-      }
-      ssa.out = static_cast<std::uint32_t>(i);  // old id for now; renumbered below
-      rev_reg.push_back(reg);
-      rev_ssa.push_back(ssa);
-    }
-    if (changed) *changed = any_dropped;
-
-    // Forward order and new SSA numbering.
-    const std::size_t m = rev_ssa.size();
-    std::vector<std::uint32_t> new_id(n, kUnused);
-    for (std::size_t k = 0; k < m; ++k) new_id[rev_ssa[m - 1 - k].out] = static_cast<std::uint32_t>(k);
-    out->ssa.resize(m);
-    out->reg.resize(m);
-    for (std::size_t k = 0; k < m; ++k) {
-      Clause ssa = rev_ssa[m - 1 - k];
-      const int ar = arity(ssa.op);
-      const bool imm = ssa.op >= Op::AddImm && ssa.op <= Op::MaxImm;
-      if (ar >= 1) ssa.a = new_id[ssa.a];
-      if (ar >= 2 && !imm) ssa.b = new_id[ssa.b];
-      if (ar >= 3) ssa.c = new_id[ssa.c];
-      if (ssa.op == Op::CallOut) ssa.b = new_id[ssa.b];
-      if (ssa.op == Op::Call) {
-        CallSite cs = src_.calls[ssa.a];
-        const std::uint32_t first = static_cast<std::uint32_t>(out->ssa_call_args.size());
-        for (std::uint32_t j = 0; j < cs.num_args; ++j) {
-          const std::uint32_t v = resolved_[src_.ssa_call_args[cs.first_arg + j]];
-          out->ssa_call_args.push_back(new_id[v]);
-          out->reg_call_args.push_back(reg_of_[v]);
-        }
-        cs.first_arg = first;
-        out->calls.push_back(cs);
-        ssa.a = static_cast<std::uint32_t>(out->calls.size() - 1);
-      }
-      ssa.out = static_cast<std::uint32_t>(k);
-      Clause reg = rev_reg[m - 1 - k];
-      if (reg.op == Op::Call) reg.a = ssa.a;
-      out->ssa[k] = ssa;
-      out->reg[k] = reg;
-      if (has_choice(ssa.op)) out->has_choices = true;
-    }
-    for (std::uint32_t v : src_.ssa_outputs) {
-      out->ssa_outputs.push_back(new_id[resolved_[v]]);
-      out->reg_outputs.push_back(reg_of_[resolved_[v]]);
-    }
-    out->num_registers = std::max<std::uint32_t>(next_reg_, 1);
-    return out;
-  }
-
- private:
-  // resolved_[v]: the value v stands for after collapsing one-sided choices (chains followed).
-  void resolve_aliases() {
-    const std::size_t n = src_.ssa.size();
-    resolved_.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      resolved_[i] = i;
-      if (choices_.empty()) continue;
-      const Clause& c = src_.ssa[i];
-      if (!has_choice(c.op) || choices_[i] == kChoiceBoth) continue;
-      if (c.op == Op::Select) resolved_[i] = resolved_[choices_[i] == kChoiceFirst ? c.b : c.c];
-      else if (choices_[i] == kChoiceFirst) resolved_[i] = resolved_[c.a];
-      else if (c.op == Op::Min || c.op == Op::Max) resolved_[i] = resolved_[c.b];
-      // MinImm / MaxImm choosing the immediate stay themselves (emitted as a Const).
-    }
-  }
-  bool collapses_to_immediate(std::size_t i) const {
-    const Clause& c = src_.ssa[i];
-    return !choices_.empty() && (c.op == Op::MinImm || c.op == Op::MaxImm) && choices_[i] == kChoiceSecond;
-  }
-  // A use of value v (walking backward): v is needed and holds a register from here back to
-  // its definition.
-  std::uint32_t use(std::uint32_t v) {
-    needed_[v] = 1;
-    if (reg_of_[v] == kUnused) {
-      if (!free_.empty()) {
-        reg_of_[v] = free_.back();
-        free_.pop_back();
-      } else {
-        reg_of_[v] = next_reg_++;
-      }
-    }
-    return reg_of_[v];
-  }
-
-  const Tape::Data& src_;
-  std::span<const std::uint8_t> choices_;
-  std::vector<std::uint32_t> resolved_, reg_of_, free_;
-  std::vector<std::uint8_t> needed_;
-  std::uint32_t next_reg_ = 0;
+// The compiler's output: SSA clauses (clause i defines value i) before register allocation.
+struct CompiledSsa {
+  std::vector<Clause> ssa;
+  std::vector<std::uint32_t> outputs;
+  std::vector<CallSite> calls;
+  std::vector<std::uint32_t> call_args;
+  std::uint32_t num_slots = 0;
 };
 
 // DAG -> SSA clauses.
 class Compiler {
  public:
-  Compiler(Tape::Data& d, std::span<const int> inputs) : d_(d) {
+  Compiler(CompiledSsa& d, std::span<const int> inputs) : d_(d) {
     for (std::size_t k = 0; k < inputs.size(); ++k) position_[inputs[k]] = static_cast<std::uint32_t>(k);
   }
 
@@ -188,8 +299,7 @@ class Compiler {
       const Node& n = dag::node(id);
       if (n.op != Op::Const) emit_node(id, n);  // constants are emitted only where a register needs them
     }
-    for (NodeId id : f.nodes()) d_.ssa_outputs.push_back(value(id));
-    d_.constants = std::make_shared<const std::vector<double>>(std::move(constants_));
+    for (NodeId id : f.nodes()) d_.outputs.push_back(value(id));
   }
 
  private:
@@ -284,9 +394,9 @@ class Compiler {
       ops_.push_back(dag::custom_shared(n.custom));
       cs.op = ops_.back().get();
       cs.op_index = static_cast<std::uint32_t>(ops_.size() - 1);
-      cs.first_arg = static_cast<std::uint32_t>(d_.ssa_call_args.size());
+      cs.first_arg = static_cast<std::uint32_t>(d_.call_args.size());
       cs.num_args = static_cast<std::uint32_t>(args.size());
-      for (NodeId a : args) d_.ssa_call_args.push_back(value(a));
+      for (NodeId a : args) d_.call_args.push_back(value(a));
       cs.first_slot = d_.num_slots;
       cs.num_outputs = static_cast<std::uint32_t>(cs.op->num_outputs());
       d_.num_slots += cs.num_outputs;
@@ -298,19 +408,20 @@ class Compiler {
     return push({Op::CallOut, {}, 0, cs.first_slot + static_cast<std::uint32_t>(n.index), call, 0});
   }
 
-  Tape::Data& d_;
+  CompiledSsa& d_;
   std::unordered_map<int, std::uint32_t> position_;
   std::unordered_map<NodeId, std::uint32_t> ssa_of_;
   std::map<double, std::uint32_t> const_index_;
-  std::vector<double> constants_;
   std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> call_of_;
 
  public:
+  std::vector<double> constants_;
   std::vector<std::shared_ptr<const CustomOp>> ops_;
 };
 
-std::shared_ptr<Tape::Data> compile(const Fn& f, std::span<const int> inputs) {
-  auto d = std::make_shared<Tape::Data>();
+}  // namespace
+
+std::shared_ptr<const TapeData> Tape::compile(const Fn& f, std::span<const int> inputs) {
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     if (inputs[k] < 0 || inputs[k] >= kMaxInputs)
       throw std::invalid_argument("genmod: Tape: input coordinate " + std::to_string(inputs[k]) + " is out of range");
@@ -318,50 +429,58 @@ std::shared_ptr<Tape::Data> compile(const Fn& f, std::span<const int> inputs) {
       if (inputs[j] == inputs[k])
         throw std::invalid_argument("genmod: Tape: input coordinate " + std::to_string(inputs[k]) + " is listed twice");
   }
-  d->inputs.assign(inputs.begin(), inputs.end());
-  Compiler compiler(*d, inputs);
+  CompiledSsa ssa;
+  Compiler compiler(ssa, inputs);
   compiler.compile(f);
-  d->ops = std::make_shared<const std::vector<std::shared_ptr<const CustomOp>>>(std::move(compiler.ops_));
-  return Rebuilder(*d, {}).run(nullptr);
+  auto common = std::make_shared<TapeCommon>();
+  common->constants = std::move(compiler.constants_);
+  common->inputs.assign(inputs.begin(), inputs.end());
+  common->ops = std::move(compiler.ops_);
+  common->num_values = static_cast<std::uint32_t>(ssa.ssa.size());
+  common->num_slots = ssa.num_slots;
+  // Register allocation is a rebuild with no choice made.
+  const std::vector<std::uint8_t> no_choices(ssa.ssa.size(), kChoiceBoth);
+  return TapeSimplifier().rebuild({ssa.ssa, ssa.outputs, ssa.calls, ssa.call_args, std::move(common)}, no_choices);
 }
-
-}  // namespace
 
 Tape::Tape(const Fn& f) : data_(compile(f, f.inputs())) {}
 Tape::Tape(const Fn& f, Coordinates inputs) : data_(compile(f, inputs)) {}
 
-std::span<const Clause> Tape::clauses() const noexcept { return data_->reg; }
-std::span<const std::uint32_t> Tape::output_registers() const noexcept { return data_->reg_outputs; }
-std::span<const std::uint32_t> Tape::call_arg_registers() const noexcept { return data_->reg_call_args; }
+std::span<const Clause> Tape::clauses() const noexcept { return data_->reg(); }
+std::span<const std::uint32_t> Tape::output_registers() const noexcept { return data_->reg_outputs(); }
+std::span<const std::uint32_t> Tape::call_arg_registers() const noexcept { return data_->reg_call_args(); }
 std::uint32_t Tape::num_registers() const noexcept { return data_->num_registers; }
-std::span<const Clause> Tape::ssa() const noexcept { return data_->ssa; }
-std::span<const std::uint32_t> Tape::output_values() const noexcept { return data_->ssa_outputs; }
-std::span<const double> Tape::constants() const noexcept { return *data_->constants; }
-std::span<const int> Tape::inputs() const noexcept { return data_->inputs; }
+std::span<const Clause> Tape::ssa() const noexcept { return data_->ssa(); }
+std::span<const std::uint32_t> Tape::output_values() const noexcept { return data_->ssa_outputs(); }
+std::uint32_t Tape::num_values() const noexcept { return data_->common->num_values; }
+std::span<const double> Tape::constants() const noexcept { return data_->common->constants; }
+std::span<const int> Tape::inputs() const noexcept { return data_->common->inputs; }
 std::span<const CallSite> Tape::calls() const noexcept { return data_->calls; }
-std::span<const std::shared_ptr<const CustomOp>> Tape::custom_ops() const noexcept {
-  if (!data_->ops) return {};
-  return *data_->ops;
-}
-std::uint32_t Tape::num_call_slots() const noexcept { return data_->num_slots; }
+std::span<const std::shared_ptr<const CustomOp>> Tape::custom_ops() const noexcept { return data_->common->ops; }
+std::uint32_t Tape::num_call_slots() const noexcept { return data_->common->num_slots; }
 bool Tape::has_choices() const noexcept { return data_->has_choices; }
 
 Tape Tape::simplify(std::span<const std::uint8_t> choices) const {
+  TapeSimplifier scratch;
+  return simplify(choices, scratch);
+}
+
+Tape Tape::simplify(std::span<const std::uint8_t> choices, TapeSimplifier& scratch) const {
   const Data& d = *data_;
-  if (choices.size() != d.ssa.size())
+  if (choices.size() != d.size())
     throw std::invalid_argument("genmod: Tape::simplify: " + std::to_string(choices.size()) + " choices for " +
-                                std::to_string(d.ssa.size()) + " clauses");
+                                std::to_string(d.size()) + " clauses");
   if (!d.has_choices) return *this;
-  bool changed = false;
-  auto out = Rebuilder(d, choices).run(&changed);
-  if (!changed) return *this;
-  return Tape(std::shared_ptr<const Data>(std::move(out)));
+  const TapeSimplifier::Source src{d.ssa(), d.ssa_outputs(), d.calls, d.ssa_call_args(), d.common};
+  scratch.prepare(d.common->num_values, d.size());
+  if (!scratch.note_aliases(src, choices)) return *this;  // nothing is one-sided: nothing changes
+  return Tape(scratch.rebuild(src, choices));
 }
 
 std::string Tape::disassemble() const {
   std::ostringstream os;
-  const auto& k = *data_->constants;
-  for (const Clause& c : data_->reg) {
+  const auto k = constants();
+  for (const Clause& c : clauses()) {
     os << 'r' << c.out << " = " << op_name(c.op);
     switch (c.op) {
       case Op::Const: os << ' ' << k[c.a]; break;
@@ -379,7 +498,7 @@ std::string Tape::disassemble() const {
     os << '\n';
   }
   os << "outputs:";
-  for (std::uint32_t r : data_->reg_outputs) os << " r" << r;
+  for (std::uint32_t r : output_registers()) os << " r" << r;
   os << '\n';
   return os.str();
 }

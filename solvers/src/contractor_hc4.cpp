@@ -118,7 +118,7 @@ bool Hc4Contractor::contract_atom(std::size_t atom, Relation rel, std::span<Inte
   const std::span<const double> k = tape.constants();
   const std::size_t n = ssa.size();
   const std::size_t unknowns = sys_->num_unknowns();
-  v_.assign(n, Interval::entire());
+  v_.assign(tape.num_values(), Interval::entire());  // by SSA value id
 
   // Forward: natural interval extension, protected (outward-rounded) operations.
   for (std::size_t i = 0; i < n; ++i) {
@@ -163,7 +163,7 @@ bool Hc4Contractor::contract_atom(std::size_t atom, Relation rel, std::span<Inte
     // An empty value is a certain error (the kernel's enclosures return the empty set only
     // then): h is NaN everywhere on the box, so no point is a solution.
     if (r.is_empty()) return false;
-    v_[i] = r;
+    v_[c.out] = r;
   }
   if (!narrow(v_[tape.output_values()[0]], target)) return false;
 
@@ -171,7 +171,7 @@ bool Hc4Contractor::contract_atom(std::size_t atom, Relation rel, std::span<Inte
   // comes after it, so a value is final when its clause is reached.
   for (std::size_t i = n; i-- > 0;) {
     const Clause& c = ssa[i];
-    const Interval y = v_[i];
+    const Interval y = v_[c.out];
     switch (c.op) {
       case Op::Load:
         if (c.a < unknowns && !narrow(box[c.a], y)) return false;

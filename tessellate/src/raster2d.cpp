@@ -37,6 +37,7 @@ struct Rect {
 // statistics do not depend on which thread did what.
 struct Worker {
   IntervalEvaluator intervals;
+  TapeSimplifier simplifier;
   BatchEvaluator points;
   std::vector<double> xs, ys, values;
   RasterStats stats;
@@ -114,7 +115,7 @@ class TileRenderer {
       return;
     }
     ++ls.ambiguous;
-    const Tape pruned = tape.simplify(w.intervals.choices());
+    const Tape pruned = tape.simplify(w.intervals.choices(), w.simplifier);
 
     // Levels whose tiles are no smaller than this one would only evaluate the same box again.
     int next = level + 1;

@@ -32,6 +32,7 @@ struct Block {
 
 struct Worker {
   IntervalEvaluator intervals;
+  TapeSimplifier simplifier;
   BatchEvaluator points;
   std::array<std::vector<double>, 3> coordinates;
   std::vector<double> values;
@@ -122,7 +123,7 @@ class CubeRenderer {
       return;
     }
     ++w.stats.ambiguous;
-    const Tape pruned = tape.simplify(w.intervals.choices());
+    const Tape pruned = tape.simplify(w.intervals.choices(), w.simplifier);
 
     // Levels whose cubes are no smaller than this block would evaluate the same box again.
     const int extent = std::max({b.c1 - b.c0, b.r1 - b.r0, b.k1 - b.k0});

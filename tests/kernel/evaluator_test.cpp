@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 
@@ -110,30 +111,100 @@ TEST(Evaluators, IntervalAtAPointContainsThePointValue) {
   }
 }
 
+// The invariants of both forms: the same operations in the same order; SSA ids unique, below
+// num_values() and defined before use; registers below num_registers().
+void expect_well_formed(const Tape& t) {
+  const auto reg = t.clauses();
+  const auto ssa = t.ssa();
+  ASSERT_EQ(reg.size(), ssa.size());
+  std::vector<bool> defined(t.num_values(), false);
+  const auto check_value = [&](std::uint32_t v) {
+    ASSERT_LT(v, t.num_values());
+    EXPECT_TRUE(defined[v]) << "value " << v << " used before its definition\n" << t.disassemble();
+  };
+  for (std::size_t i = 0; i < ssa.size(); ++i) {
+    ASSERT_EQ(reg[i].op, ssa[i].op);
+    const int ar = arity(ssa[i].op);
+    const bool imm = ssa[i].op >= Op::AddImm && ssa[i].op <= Op::MaxImm;
+    if (ar >= 1) check_value(ssa[i].a);
+    if (ar >= 2 && !imm) check_value(ssa[i].b);
+    if (ar >= 3) check_value(ssa[i].c);
+    if (ar >= 1) {
+      EXPECT_LT(reg[i].a, t.num_registers());
+    }
+    EXPECT_LT(reg[i].out, t.num_registers());
+    ASSERT_LT(ssa[i].out, t.num_values());
+    EXPECT_FALSE(defined[ssa[i].out]) << "value " << ssa[i].out << " defined twice";
+    defined[ssa[i].out] = true;
+  }
+  for (std::uint32_t v : t.output_values()) check_value(v);
+  for (std::uint32_t r : t.output_registers()) EXPECT_LT(r, t.num_registers());
+}
+
+bool same_clause(const Clause& x, const Clause& y) {
+  return x.op == y.op && x.out == y.out && x.a == y.a && x.b == y.b && x.c == y.c;
+}
+
+// Pruned with reused scratch memory and with fresh scratch memory: the same tape.
+void expect_same_tape(const Tape& x, const Tape& y) {
+  ASSERT_EQ(x.size(), y.size());
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    EXPECT_TRUE(same_clause(x.clauses()[i], y.clauses()[i])) << i;
+    EXPECT_TRUE(same_clause(x.ssa()[i], y.ssa()[i])) << i;
+  }
+  EXPECT_TRUE(std::ranges::equal(x.output_registers(), y.output_registers()));
+  EXPECT_TRUE(std::ranges::equal(x.output_values(), y.output_values()));
+  EXPECT_EQ(x.num_registers(), y.num_registers());
+}
+
+// `pruned` equals `full` bit for bit at sample points of `box`.
+void expect_equal_inside(const Tape& full, const Tape& pruned, const std::vector<Interval>& box, RandomFunctions& rnd) {
+  PointEvaluator pv;
+  for (int s = 0; s < 20; ++s) {
+    const std::vector<double> p = {rnd.sample(box[0], s), rnd.sample(box[1], s + 1), rnd.sample(box[2], s + 2)};
+    const double a = pv.eval(full, p)[0];
+    const double b = pv.eval(pruned, p)[0];
+    ASSERT_TRUE(same_bits(a, b) || (std::isnan(a) && std::isnan(b)))
+        << a << " vs " << b << "\nfull:\n" << full.disassemble() << "pruned:\n" << pruned.disassemble();
+  }
+}
+
+// Pruning as the renderers use it: one TapeSimplifier reused across tapes of all sizes (its
+// scratch arrays must come back clean from every call), choices weakened at random (either
+// side is always allowed), and the pruned tape pruned again inside a smaller box (a pruned
+// tape keeps its parent's value ids).
 TEST(Evaluators, PrunedTapeEqualsFullTapeInsideItsBox) {
   RandomFunctions rnd(24);
   IntervalEvaluator iv;
-  PointEvaluator pv;
-  int pruned = 0;
+  TapeSimplifier scratch;
+  int pruned = 0, pruned_again = 0;
   for (int trial = 0; trial < 1500; ++trial) {
     // Min/max-heavy functions, as in CSG.
     Fn f = rnd.function(3);
     for (int k = 0; k < 4; ++k) f = (k % 2 ? min(f, rnd.function(3)) : max(f, rnd.function(3)));
     f = select(x(0) < rnd.uniform(-1, 1), f, rnd.function(3));
     const Tape tape(f, kXyz);
-    const std::vector<Interval> box = {rnd.small_interval(), rnd.small_interval(), rnd.small_interval()};
+    std::vector<Interval> box = {rnd.small_interval(), rnd.small_interval(), rnd.small_interval()};
     iv.eval(tape, box);
-    const Tape shorter = tape.simplify(iv.choices());
+    std::vector<std::uint8_t> choices(iv.choices().begin(), iv.choices().end());
+    if (trial % 3 == 0)
+      for (auto& c : choices)
+        if (rnd.integer(0, 2) == 0) c = kChoiceBoth;
+    const Tape shorter = tape.simplify(choices, scratch);
+    expect_well_formed(shorter);
+    expect_same_tape(shorter, tape.simplify(choices));
     if (shorter.size() < tape.size()) ++pruned;
-    for (int s = 0; s < 20; ++s) {
-      const std::vector<double> p = {rnd.sample(box[0], s), rnd.sample(box[1], s + 1), rnd.sample(box[2], s + 2)};
-      const double full = pv.eval(tape, p)[0];
-      const double fast = pv.eval(shorter, p)[0];
-      ASSERT_TRUE(same_bits(full, fast) || (std::isnan(full) && std::isnan(fast)))
-          << full << " vs " << fast << "\nfull:\n" << tape.disassemble() << "pruned:\n" << shorter.disassemble();
-    }
+    expect_equal_inside(tape, shorter, box, rnd);
+
+    for (Interval& b : box) b = Interval(b.lo(), b.lo() + 0.25 * (b.hi() - b.lo()));
+    iv.eval(shorter, box);
+    const Tape shortest = shorter.simplify(iv.choices(), scratch);
+    expect_well_formed(shortest);
+    if (shortest.size() < shorter.size()) ++pruned_again;
+    expect_equal_inside(tape, shortest, box, rnd);
   }
   EXPECT_GT(pruned, 300);
+  EXPECT_GT(pruned_again, 100);
 }
 
 TEST(Evaluators, ProsperoPrunesToAFractionInSmallTiles) {
@@ -241,6 +312,33 @@ TEST(Evaluators, CustomOperatorThroughAllThreeMethods) {
   EXPECT_THROW(apply_custom(op, {x(0), x(1)}), std::invalid_argument);
 }
 
+
+// Pruning drops a call whose outputs nothing kept needs, and keeps (renumbered) the others.
+TEST(Evaluators, PruningKeepsTheCallsItNeeds) {
+  auto op = std::make_shared<UnitCircle>();
+  const Fn near = apply_custom(op, {x(0)});
+  const Fn far = apply_custom(op, {x(0) + 0.25});
+  const Tape tape(select(x(0) < 0.5, min(near[0], near[1]), far[1] * x(1)), std::vector<int>{0, 1});
+  ASSERT_EQ(tape.calls().size(), 2u);
+  IntervalEvaluator iv;
+  PointEvaluator pv;
+  TapeSimplifier scratch;
+  struct Case {
+    double lo, hi;
+    std::size_t calls;
+  };
+  for (const Case& c : {Case{0.1, 0.3, 1}, Case{0.6, 0.9, 1}, Case{0.3, 0.7, 2}}) {
+    const std::vector<Interval> box = {Interval(c.lo, c.hi), Interval(-1, 1)};
+    iv.eval(tape, box);
+    const Tape pruned = tape.simplify(iv.choices(), scratch);
+    expect_well_formed(pruned);
+    EXPECT_EQ(pruned.calls().size(), c.calls) << pruned.disassemble();
+    for (int s = 0; s <= 10; ++s) {
+      const std::vector<double> p = {c.lo + (c.hi - c.lo) * s / 10, 0.3};
+      EXPECT_TRUE(same_bits(pv.eval(tape, p)[0], pv.eval(pruned, p)[0])) << p[0];
+    }
+  }
+}
 
 // A custom operator with no arguments: a named constant with a rigorous enclosure.
 class GoldenRatio : public CustomOp {

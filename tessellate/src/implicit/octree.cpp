@@ -64,7 +64,7 @@ Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext&
     d.kind = CellKind::Inside;
     return d;
   }
-  CellTapes tapes{parent.value.simplify(w.intervals.choices()), parent.gradient};
+  CellTapes tapes{parent.value.simplify(w.intervals.choices(), w.simplifier), parent.gradient};
 
   // g = max(f, clip): f is the maximum somewhere iff f.hi >= clip.lo.
   const bool f_active = f.hi() >= s.lo();
@@ -74,7 +74,7 @@ Decision classify(const Cell& c, const CellTapes& parent, const ClassifyContext&
     const auto gf = w.intervals.eval(parent.gradient, box);
     bool gerr = false;
     for (std::uint8_t e : w.intervals.errors()) gerr = gerr || e != kNoError;
-    tapes.gradient = parent.gradient.simplify(w.intervals.choices());
+    tapes.gradient = parent.gradient.simplify(w.intervals.choices(), w.simplifier);
     for (int k = 0; k < 3; ++k) g[k] = gerr ? Interval::entire() : gf[static_cast<std::size_t>(k)];
     d.bounded_gradient = !gerr;
     gradient_continuous = w.intervals.continuous();

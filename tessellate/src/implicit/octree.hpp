@@ -47,6 +47,7 @@ struct ClassifyContext {
 
 struct ClassifyWorker {
   IntervalEvaluator intervals;
+  TapeSimplifier simplifier;
   std::size_t evaluations = 0;
 };
 

@@ -1,14 +1,18 @@
 // Tape: an Fn compiled once into a flat list of fixed-size clauses.
 //
-// A tape is kept in two forms with the same clause order: SSA (clause i defines value i) for
-// simplification, and register form (values packed into a small register file by linear-scan
-// allocation) for the evaluators. Constant operands of + - * / min max are folded into the
+// A tape is kept in two forms with the same clause order: SSA (each clause defines its own
+// value id) for simplification, and register form (values packed into a small register file by
+// linear-scan allocation) for the evaluators. A pruned tape keeps the value ids of the tape it
+// was pruned from (ids are below num_values(), the length of the compiled tape, and increase
+// along the tape), so pruning never renumbers values. Constant operands of + - * / min max are folded into the
 // clause as immediates. Tapes are immutable and cheap to copy (shared), so one tape can be
 // used by evaluators on many threads at once; each evaluator owns its scratch memory.
 //
 // Pruning: an interval evaluation records, for each min / max / select clause, whether only
 // one side can be the result over the box (a Choice). `simplify(choices)` returns a shorter
-// tape that equals this one at every point of that box (and of any box inside it).
+// tape that equals this one at every point of that box (and of any box inside it). Callers
+// that prune often (renderers, meshers) pass a TapeSimplifier, one per thread, whose scratch
+// memory is reused from call to call.
 #pragma once
 
 #include "genmod/kernel/coordinates.hpp"
@@ -28,9 +32,9 @@ class CustomOp;
 struct Clause {
   Op op;
   std::uint8_t reserved[3] = {0, 0, 0};
-  std::uint32_t out;  // destination register (SSA form: the clause's own index)
+  std::uint32_t out;  // destination register (SSA form: the id of the value it defines)
   std::uint32_t a;    // first operand; Const: constant index; Load: input position; Call: call index; CallOut: slot
-  std::uint32_t b;    // second operand; immediate forms: constant index; CallOut: the Call clause (SSA)
+  std::uint32_t b;    // second operand; immediate forms: constant index; CallOut: the Call clause's value (SSA)
   std::uint32_t c;    // third operand (select's else branch)
 };
 static_assert(sizeof(Clause) == 20);
@@ -52,6 +56,38 @@ struct CallSite {
   std::uint32_t num_outputs;
 };
 
+class Tape;
+struct TapeData;  // a tape's contents (tape.cpp)
+
+// Scratch memory of Tape::simplify, reused from call to call (one per thread, like an
+// evaluator). Between calls reg_of_ holds no register and alias_ is the identity, so a call
+// needs no clearing of arrays as long as the compiled tape.
+class TapeSimplifier {
+ public:
+  TapeSimplifier() = default;
+
+ private:
+  friend class Tape;
+  struct Source;
+  class Registers;
+  std::shared_ptr<TapeData> rebuild(const Source& src, std::span<const std::uint8_t> choices);
+  bool note_aliases(const Source& src, std::span<const std::uint8_t> choices);
+  void prepare(std::size_t num_values, std::size_t length);
+  void keep_call_or_out(const Source& src, const Clause& c, std::size_t position, Registers& regs, Clause& reg);
+  void finish_calls(const Source& src, std::size_t first, TapeData& out);
+
+  std::vector<std::uint32_t> reg_of_;  // by value id: its register while live (walking backward)
+  std::vector<std::uint32_t> alias_;   // by value id: the value it stands for (one-sided choices)
+  std::vector<std::uint32_t> free_;    // stack of the registers free at the current clause
+  std::vector<Clause> reg_out_, ssa_out_;  // emitted clauses, written from the end
+  struct EmittedCall {
+    std::uint32_t position, call, first_arg;
+  };
+  std::vector<EmittedCall> calls_;            // last first
+  std::vector<std::uint32_t> call_regs_, call_values_;
+  bool clean_ = true;  // false from note_aliases() to the end of rebuild(): after an exception, prepare() resets
+};
+
 class Tape {
  public:
   // Compiles f with inputs in the order of f.inputs().
@@ -65,9 +101,12 @@ class Tape {
   std::span<const std::uint32_t> output_registers() const noexcept;
   std::span<const std::uint32_t> call_arg_registers() const noexcept;
   std::uint32_t num_registers() const noexcept;
-  // SSA form (same clause order); output j is the value of SSA clause output_values()[j].
+  // SSA form (same clause order): clause i defines value ssa()[i].out, an id below
+  // num_values(); its operands are values defined earlier on the tape. Output j is value
+  // output_values()[j].
   std::span<const Clause> ssa() const noexcept;
   std::span<const std::uint32_t> output_values() const noexcept;
+  std::uint32_t num_values() const noexcept;
 
   std::span<const double> constants() const noexcept;
   std::span<const int> inputs() const noexcept;
@@ -82,16 +121,19 @@ class Tape {
   bool has_choices() const noexcept;
 
   // A tape equal to this one wherever `choices` (one per clause, from an interval
-  // evaluation) hold. Returns this tape itself when nothing can be removed.
+  // evaluation) hold. Returns this tape itself when no choice is one-sided. The first form
+  // allocates scratch memory as long as the compiled tape; the second reuses `scratch`'s.
   Tape simplify(std::span<const std::uint8_t> choices) const;
+  Tape simplify(std::span<const std::uint8_t> choices, TapeSimplifier& scratch) const;
 
   // One line per clause, for debugging and the `info` command.
   std::string disassemble() const;
 
-  struct Data;
+  using Data = TapeData;
 
  private:
   explicit Tape(std::shared_ptr<const Data> data) : data_(std::move(data)) {}
+  static std::shared_ptr<const Data> compile(const Fn& f, std::span<const int> inputs);
   std::shared_ptr<const Data> data_;
 };
 
