@@ -5,8 +5,12 @@
 
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
+#include "genmod/models/trimmed_csg.hpp"
 
 #include <pybind11/stl.h>
+
+#include <stdexcept>
+#include <string>
 
 namespace py = pybind11;
 
@@ -28,9 +32,14 @@ void bind_gallery(py::module_& m) {
       out.append(py::make_tuple(model.name, "parametric", model.description, parameters(model.parameters), model.open));
     for (const models::ImplicitModel& model : models::implicit_gallery())
       out.append(py::make_tuple(model.name, "implicit", model.description, parameters(model.parameters), false));
+    for (const models::CsgModel& model : models::csg_models())
+      out.append(py::make_tuple(model.name, "csg", model.description, py::list(), false));
     return out;
   });
   m.def("_build_model", [](const std::string& name, const models::ParameterValues& params) {
+    if (models::is_csg_model(name))
+      throw std::invalid_argument("CSG model '" + name +
+                                  "' is a Boolean combination of trimmed surfaces, not one function: mesh it with gallery.mesh");
     if (const models::ImplicitModel* implicit = models::find_implicit_model(name))
       return models::build_implicit_model(*implicit, params);
     return models::build_model(models::find_model(name), params);
@@ -39,7 +48,21 @@ void bind_gallery(py::module_& m) {
                           double max_seconds, int threads) {
     py::dict info;
     Mesh mesh;
-    if (const models::ImplicitModel* implicit = models::find_implicit_model(name)) {
+    if (models::is_csg_model(name)) {
+      if (!params.empty()) throw std::invalid_argument("CSG model '" + name + "' has no parameters");
+      models::TrimmedCsgOptions o;
+      if (tolerance > 0) o.tolerance = tolerance;
+      o.curve_time = max_seconds;
+      // No cancel flag reaches the CSG pipeline: max_seconds bounds its intersection curve.
+      const models::TrimmedCsgResult r = [&] {
+        py::gil_scoped_release release;
+        return models::mesh_csg_model(name, o);
+      }();
+      info["tolerance"] = o.tolerance;
+      info["curve_complete"] = r.curve_complete;
+      info["seam_vertices"] = r.seam.size();
+      mesh = r.mesh;
+    } else if (const models::ImplicitModel* implicit = models::find_implicit_model(name)) {
       const Fn f = models::build_implicit_model(*implicit, params);
       ImplicitMeshSettings s;
       s.min_feature = implicit->min_feature;

@@ -23,6 +23,20 @@ def test_gallery_lists_builds_and_meshes_models():
         gallery.build("no_such_model")
 
 
+def test_gallery_lists_and_meshes_the_csg_models():
+    names = {m.name: m for m in gallery.models()}
+    assert names["drilled_sphere"].kind == "csg" and names["drilled_sphere_twice"].kind == "csg"
+    mesh, info = gallery.mesh("drilled_sphere")
+    report = mesh.validate()
+    assert report["valid"], report["description"]
+    assert report["euler_characteristic"] == 0  # genus 1: the bore goes through
+    assert info["curve_complete"] and info["seam_vertices"] > 0 and info["tolerance"] == 0.05
+    with pytest.raises(ValueError, match="not one function"):
+        gallery.build("drilled_sphere")
+    with pytest.raises(ValueError, match="no parameters"):
+        gallery.mesh("drilled_sphere", radius=0.2)
+
+
 def test_implicit_mesh_is_valid_and_round_trips_through_a_file(tmp_path):
     x, y, z = gm.x(0), gm.x(1), gm.x(2)
     torus = (gm.sqrt(x ** 2 + y ** 2) - 1.0) ** 2 + z ** 2 - 0.09

@@ -23,7 +23,8 @@ class Parameter:
 class Model:
     """A gallery model: its name, kind, description, parameters and whether it is open."""
     name: str
-    kind: str  # "parametric" (a surface or solid of x(0), x(1), x(2)) or "implicit" (f < 0 inside)
+    kind: str  # "parametric" (a surface or solid of x(0), x(1), x(2)), "implicit" (f < 0 inside)
+    # or "csg" (a Boolean combination of trimmed parametric surfaces; meshed, not built)
     description: str
     parameters: tuple
     open: bool  # its mesh has a boundary (a sheet, a fillet piece)
@@ -44,6 +45,8 @@ def build(name, **params):
 
 def mesh(name, tolerance=0.0, max_seconds=120.0, threads=0, **params):
     """Meshes the model: parametric models adaptively within `tolerance` (default 1e-3 of the
-    model's size), implicit ones with the octree mesher. Returns (Mesh, info)."""
+    model's size), implicit ones with the octree mesher, CSG models by Algorithm 5.4 with
+    `tolerance` the sampling box width (default 0.05; `max_seconds` bounds their intersection
+    curve). Returns (Mesh, info)."""
     return _genmod._mesh_model(name, {k: float(v) for k, v in params.items()}, float(tolerance),
                                float(max_seconds), int(threads))

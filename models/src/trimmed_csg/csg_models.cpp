@@ -44,9 +44,19 @@ ClosedSurface sphere_surface(double radius, double cx, double cy, double cz) {
           true, false};
 }
 
-std::vector<std::string> csg_model_names() { return {"drilled_sphere", "drilled_sphere_twice"}; }
+const std::vector<CsgModel>& csg_models() {
+  static const std::vector<CsgModel> models{
+      {"drilled_sphere", "the bumpy sphere minus a cylinder: one closed mesh of genus 1 (Fig 5.20-5.22, Algorithm 5.4)"},
+      {"drilled_sphere_twice",
+       "(A - B) - C: the drilled sphere minus a second, thinner bore above the first: genus 2 (full CSG, §5.5)"}};
+  return models;
+}
 
-bool is_csg_model(const std::string& name) { return name == "drilled_sphere" || name == "drilled_sphere_twice"; }
+bool is_csg_model(const std::string& name) {
+  for (const CsgModel& m : csg_models())
+    if (m.name == name) return true;
+  return false;
+}
 
 TrimmedCsgResult mesh_csg_model(const std::string& name, const TrimmedCsgOptions& options) {
   if (name == "drilled_sphere") return trimmed_csg(bumpy_sphere(), drill_cylinder(0.3), CsgOperation::Difference, options);

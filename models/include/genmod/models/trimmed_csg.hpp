@@ -97,10 +97,15 @@ ClosedSurface drill_cylinder(double radius = 0.3);
 ClosedSurface cross_cylinder(double radius = 0.2, double z0 = 0.55);
 ClosedSurface sphere_surface(double radius, double cx, double cy, double cz);
 
-// Named CSG models for `genmod mesh`: "drilled_sphere" (bumpy sphere minus cylinder) and
-// "drilled_sphere_twice" ((A - B) - C, §5.5: the drilled sphere minus a second, thinner
-// cylinder along y above the first, the two bores not meeting: genus 2).
-std::vector<std::string> csg_model_names();
+// Named CSG models for `genmod mesh`, `genmod list` and Python's gallery: "drilled_sphere"
+// (bumpy sphere minus cylinder) and "drilled_sphere_twice" ((A - B) - C, §5.5: the drilled
+// sphere minus a second, thinner cylinder along y above the first, the two bores not meeting:
+// genus 2). They have no parameters; TrimmedCsgOptions sets how finely they are meshed.
+struct CsgModel {
+  std::string name;
+  std::string description;
+};
+const std::vector<CsgModel>& csg_models();
 bool is_csg_model(const std::string& name);
 TrimmedCsgResult mesh_csg_model(const std::string& name, const TrimmedCsgOptions& options = {});
 
