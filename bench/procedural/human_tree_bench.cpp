@@ -97,11 +97,11 @@ BENCHMARK(BM_TreeBranchesCachedWarm)->Unit(benchmark::kMicrosecond);
 // Experiment 6: the human (claim 14: only the feet cached).
 void BM_HumanCacheOff(benchmark::State& state) { auto r = registry(); run(state, *r, "human", {}, Cache::Off, "foot"); }
 void BM_HumanFeetCachedCold(benchmark::State& state) {
-  auto r = registry({"leg"});
+  auto r = registry({"leg", "arm", "torso", "head"});
   run(state, *r, "human", {}, Cache::Cold, "foot");
 }
 void BM_HumanFeetCachedWarm(benchmark::State& state) {
-  auto r = registry({"leg"});
+  auto r = registry({"leg", "arm", "torso", "head"});
   run(state, *r, "human", {}, Cache::Warm, "foot");
 }
 void BM_HumanLegsCachedWarm(benchmark::State& state) { auto r = registry(); run(state, *r, "human", {}, Cache::Warm, "leg"); }

@@ -237,16 +237,24 @@ TEST(HumanAndTree, HumanCacheCounts) {
   EXPECT_EQ(r.cache_stats("leg").hits, 0u);
   EXPECT_EQ(r.cache_stats("foot").misses, 2u);
   EXPECT_EQ(r.cache_stats("foot").hits, 0u);
+  for (const char* part : {"arm", "torso", "head"}) {  // one call each per human
+    EXPECT_EQ(r.cache_stats(part).misses, 1u) << part;
+    EXPECT_EQ(r.cache_stats(part).hits, 0u) << part;
+  }
   const PolyMesh second = r.call("human");
   EXPECT_EQ(r.cache_stats("leg").hits, 2u);
   EXPECT_EQ(r.cache_stats("foot").misses, 2u);  // a leg hit does not call foot
+  for (const char* part : {"arm", "torso", "head"}) {
+    EXPECT_EQ(r.cache_stats(part).misses, 1u) << part;
+    EXPECT_EQ(r.cache_stats(part).hits, 1u) << part;
+  }
   EXPECT_EQ(mesh_difference(first, second), "");
   r.set_caching(false);
   EXPECT_EQ(mesh_difference(r.call("human"), first), "");
 
   // Claim 14's setting: only the feet cached. Two feet per human, two distinct keys: the cache
   // gives nothing on the first human (2 misses, 0 hits) and both feet on a second.
-  OwnRegistry feet_only({"leg"});
+  OwnRegistry feet_only({"leg", "arm", "torso", "head"});
   ProcedureRegistry& f = feet_only.registry;
   EXPECT_EQ(mesh_difference(f.call("human"), first), "");
   EXPECT_EQ(f.cache_stats("foot").misses, 2u);

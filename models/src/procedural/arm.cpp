@@ -49,6 +49,7 @@ ProceduralModelDef arm_definition() {
   spec.params = {param("length", 0.6858), param("thickness", 0.0894521739130435), param("segments", 6),
                  param("subdivisions", 2), param("smoothing", 0.5)};
   spec.out_body = build_arm;
+  spec.cacheable = true;  // no random numbers: the arguments alone decide the mesh
   ProceduralModel info{
       "arm",
       "the human arm held out along +x (shoulder, elbow, wrist, flat hand); flat root 'armroot' at x = 0",

@@ -53,6 +53,7 @@ ProceduralModelDef head_definition() {
   spec.mode = Mode::Out;
   spec.params = {param("head", 0.2286), param("subdivisions", 2)};
   spec.out_body = build_head;
+  spec.cacheable = true;  // no random numbers: the arguments alone decide the mesh
   ProceduralModel info{"head",
                        "the human neck and head (a smoothed grid box with a nose); flat root 'headroot' at y = 0",
                        {{"head", "the head unit (Loomis: an eighth of the height): the head's height"},

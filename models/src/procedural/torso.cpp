@@ -116,6 +116,7 @@ ProceduralModelDef torso_definition() {
                  param("tummy", 0.0),                 param("butt", 0.0),
                  param("cubical", true)};
   spec.out_body = build_torso;
+  spec.cacheable = true;  // no random numbers: the arguments alone decide the mesh
   ProceduralModel info{
       "torso",
       "the human torso (Algorithm 2 + TorsoCurves): a 7 x 12 x 6 block shaped by the side, front and back curves, "
