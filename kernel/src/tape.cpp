@@ -98,8 +98,41 @@ struct TapeData {
   std::span<const std::uint32_t> ssa_call_args() const noexcept { return std::span(call_args).subspan(call_args.size() / 2); }
 };
 
+// The simplifier's scratch: between calls reg_of_ holds no register and alias_ is the
+// identity, so a call needs no clearing of arrays as long as the compiled tape.
+class TapeSimplifier::Impl {
+ public:
+  struct Source;
+  class Registers;
+  std::shared_ptr<TapeData> rebuild(const Source& src, std::span<const std::uint8_t> choices);
+  bool note_aliases(const Source& src, std::span<const std::uint8_t> choices);
+  void prepare(std::size_t num_values, std::size_t length);
+
+ private:
+  void keep_call_or_out(const Source& src, const Clause& c, std::size_t position, Registers& regs, Clause& reg);
+  void finish_calls(const Source& src, std::size_t first, TapeData& out);
+
+  std::vector<std::uint32_t> reg_of_;  // by value id: its register while live (walking backward)
+  std::vector<std::uint32_t> alias_;   // by value id: the value it stands for (one-sided choices)
+  std::vector<std::uint32_t> free_;    // stack of the registers free at the current clause
+  std::vector<Clause> reg_out_, ssa_out_;  // emitted clauses, written from the end
+  struct EmittedCall {
+    std::uint32_t position, call, first_arg;
+  };
+  std::vector<EmittedCall> calls_;            // last first
+  std::vector<std::uint32_t> call_regs_, call_values_;
+  bool clean_ = true;  // false from note_aliases() to the end of rebuild(): after an exception, prepare() resets
+};
+
+TapeSimplifier::TapeSimplifier() : impl_(std::make_unique<Impl>()) {}
+TapeSimplifier::~TapeSimplifier() = default;
+TapeSimplifier::TapeSimplifier(const TapeSimplifier&) : impl_(std::make_unique<Impl>()) {}
+TapeSimplifier& TapeSimplifier::operator=(const TapeSimplifier&) { return *this; }  // keeps its own scratch
+TapeSimplifier::TapeSimplifier(TapeSimplifier&&) noexcept = default;
+TapeSimplifier& TapeSimplifier::operator=(TapeSimplifier&&) noexcept = default;
+
 // The SSA form a rebuild reads: a tape's, or the compiler's before registers are allocated.
-struct TapeSimplifier::Source {
+struct TapeSimplifier::Impl::Source {
   std::span<const Clause> ssa;
   std::span<const std::uint32_t> outputs;  // values
   std::span<const CallSite> calls;
@@ -110,7 +143,7 @@ struct TapeSimplifier::Source {
 // Linear-scan register allocation walking backward over a tape: a value takes a register at
 // its last use and gives it back at its definition. Works on the simplifier's arrays through
 // plain pointers, so the hot loop keeps its state in registers.
-class TapeSimplifier::Registers {
+class TapeSimplifier::Impl::Registers {
  public:
   // free_stack: room for one register per value, from free_stack[1].
   Registers(std::uint32_t* reg_of, std::uint32_t* free_stack) : reg_of_(reg_of), free_(free_stack) {}
@@ -142,7 +175,7 @@ class TapeSimplifier::Registers {
   std::uint32_t next_ = 0;
 };
 
-void TapeSimplifier::prepare(std::size_t num_values, std::size_t length) {
+void TapeSimplifier::Impl::prepare(std::size_t num_values, std::size_t length) {
   if (!clean_) {  // a rebuild was interrupted by an exception
     std::fill(reg_of_.begin(), reg_of_.end(), kNone);
     std::iota(alias_.begin(), alias_.end(), 0u);
@@ -164,7 +197,7 @@ void TapeSimplifier::prepare(std::size_t num_values, std::size_t length) {
 // (chains followed, as its operand was resolved before). Returns whether some choice is
 // one-sided, i.e. whether the tape changes (a tape never holds dead clauses). No branch per
 // clause: alias_ is the identity for the others.
-bool TapeSimplifier::note_aliases(const Source& src, std::span<const std::uint8_t> choices) {
+bool TapeSimplifier::Impl::note_aliases(const Source& src, std::span<const std::uint8_t> choices) {
   clean_ = false;  // until rebuild() has undone the aliases
   std::uint8_t any = kKeep;
   for (std::size_t i = 0; i < choices.size(); ++i) {
@@ -182,7 +215,7 @@ bool TapeSimplifier::note_aliases(const Source& src, std::span<const std::uint8_
 // taken at its last use and released at its definition) and writes both forms of the kept
 // clauses from the end of reg_out_ / ssa_out_, so they come out in order. Leaves reg_of_ all
 // kNone and alias_ the identity again: every value met is defined further back on the tape.
-std::shared_ptr<TapeData> TapeSimplifier::rebuild(const Source& src, std::span<const std::uint8_t> choices) {
+std::shared_ptr<TapeData> TapeSimplifier::Impl::rebuild(const Source& src, std::span<const std::uint8_t> choices) {
   const std::size_t n = src.ssa.size();
   if (clean_) prepare(src.common->num_values, n);  // else note_aliases() has prepared
   clean_ = false;
@@ -240,8 +273,8 @@ std::shared_ptr<TapeData> TapeSimplifier::rebuild(const Source& src, std::span<c
 
 // Call and CallOut clauses (rare): a call has no register and uses its arguments; an output
 // keeps its call (an ordering dependency).
-void TapeSimplifier::keep_call_or_out(const Source& src, const Clause& c, std::size_t position, Registers& regs,
-                                      Clause& reg) {
+void TapeSimplifier::Impl::keep_call_or_out(const Source& src, const Clause& c, std::size_t position, Registers& regs,
+                                            Clause& reg) {
   if (c.op == Op::CallOut) {
     regs.keep_call(c.b);
     return;
@@ -258,7 +291,7 @@ void TapeSimplifier::keep_call_or_out(const Source& src, const Clause& c, std::s
 
 // Numbers the kept calls in tape order and points their clauses at them; `first` is where
 // the kept clauses start in reg_out_.
-void TapeSimplifier::finish_calls(const Source& src, std::size_t first, TapeData& out) {
+void TapeSimplifier::Impl::finish_calls(const Source& src, std::size_t first, TapeData& out) {
   const std::size_t m = out.size();
   std::vector<std::uint32_t> regs, values;
   for (std::size_t j = calls_.size(); j-- > 0;) {
@@ -440,7 +473,7 @@ std::shared_ptr<const TapeData> Tape::compile(const Fn& f, std::span<const int> 
   common->num_slots = ssa.num_slots;
   // Register allocation is a rebuild with no choice made.
   const std::vector<std::uint8_t> no_choices(ssa.ssa.size(), kChoiceBoth);
-  return TapeSimplifier().rebuild({ssa.ssa, ssa.outputs, ssa.calls, ssa.call_args, std::move(common)}, no_choices);
+  return TapeSimplifier::Impl().rebuild({ssa.ssa, ssa.outputs, ssa.calls, ssa.call_args, std::move(common)}, no_choices);
 }
 
 Tape::Tape(const Fn& f) : data_(compile(f, f.inputs())) {}
@@ -471,10 +504,11 @@ Tape Tape::simplify(std::span<const std::uint8_t> choices, TapeSimplifier& scrat
     throw std::invalid_argument("genmod: Tape::simplify: " + std::to_string(choices.size()) + " choices for " +
                                 std::to_string(d.size()) + " clauses");
   if (!d.has_choices) return *this;
-  const TapeSimplifier::Source src{d.ssa(), d.ssa_outputs(), d.calls, d.ssa_call_args(), d.common};
-  scratch.prepare(d.common->num_values, d.size());
-  if (!scratch.note_aliases(src, choices)) return *this;  // nothing is one-sided: nothing changes
-  return Tape(scratch.rebuild(src, choices));
+  const TapeSimplifier::Impl::Source src{d.ssa(), d.ssa_outputs(), d.calls, d.ssa_call_args(), d.common};
+  TapeSimplifier::Impl& impl = *scratch.impl_;
+  impl.prepare(d.common->num_values, d.size());
+  if (!impl.note_aliases(src, choices)) return *this;  // nothing is one-sided: nothing changes
+  return Tape(impl.rebuild(src, choices));
 }
 
 std::string Tape::disassemble() const {

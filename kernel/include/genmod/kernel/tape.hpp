@@ -60,32 +60,20 @@ class Tape;
 struct TapeData;  // a tape's contents (tape.cpp)
 
 // Scratch memory of Tape::simplify, reused from call to call (one per thread, like an
-// evaluator). Between calls reg_of_ holds no register and alias_ is the identity, so a call
-// needs no clearing of arrays as long as the compiled tape.
+// evaluator). Its contents are private to the kernel; a copy starts with empty scratch.
 class TapeSimplifier {
  public:
-  TapeSimplifier() = default;
+  TapeSimplifier();
+  ~TapeSimplifier();
+  TapeSimplifier(const TapeSimplifier&);
+  TapeSimplifier& operator=(const TapeSimplifier&);
+  TapeSimplifier(TapeSimplifier&&) noexcept;
+  TapeSimplifier& operator=(TapeSimplifier&&) noexcept;
 
  private:
   friend class Tape;
-  struct Source;
-  class Registers;
-  std::shared_ptr<TapeData> rebuild(const Source& src, std::span<const std::uint8_t> choices);
-  bool note_aliases(const Source& src, std::span<const std::uint8_t> choices);
-  void prepare(std::size_t num_values, std::size_t length);
-  void keep_call_or_out(const Source& src, const Clause& c, std::size_t position, Registers& regs, Clause& reg);
-  void finish_calls(const Source& src, std::size_t first, TapeData& out);
-
-  std::vector<std::uint32_t> reg_of_;  // by value id: its register while live (walking backward)
-  std::vector<std::uint32_t> alias_;   // by value id: the value it stands for (one-sided choices)
-  std::vector<std::uint32_t> free_;    // stack of the registers free at the current clause
-  std::vector<Clause> reg_out_, ssa_out_;  // emitted clauses, written from the end
-  struct EmittedCall {
-    std::uint32_t position, call, first_arg;
-  };
-  std::vector<EmittedCall> calls_;            // last first
-  std::vector<std::uint32_t> call_regs_, call_values_;
-  bool clean_ = true;  // false from note_aliases() to the end of rebuild(): after an exception, prepare() resets
+  class Impl;
+  std::unique_ptr<Impl> impl_;
 };
 
 class Tape {
