@@ -44,6 +44,49 @@ void points_between(const std::vector<std::int64_t>& line, std::int64_t lo, std:
   for (auto it = std::lower_bound(line.begin(), line.end(), lo); it != line.end() && *it < hi; ++it) emit(*it);
 }
 
+// Twice the signed area of the parameter triangle (a, b, c); exact in 64-bit integers.
+std::int64_t doubled_area(const GridPoint& a, const GridPoint& b, const GridPoint& c) {
+  return (b.u - a.u) * (c.v - a.v) - (b.v - a.v) * (c.u - a.u);
+}
+
+// Triangulates a leaf's boundary polygon (counter-clockwise from its lower-left corner, more
+// than four points) without an extra point: n points give n - 2 triangles, where a fan from
+// the centre gives n. The polygon is zipped between its two chains from the lower-left to the
+// upper-right corner: A along the bottom and right edges, B up the left edge and along the
+// top. A triangle of points on one edge would be degenerate; such a step is never taken, and
+// neither chain reaches the upper-right corner before the other is one step from it, so a
+// valid step always exists (the corner is on neither of the other chain's edges). Of two
+// valid steps, the one with the shorter new diagonal (relative to the leaf's sides) is taken.
+template <class Emit>
+void zip_polygon(const std::vector<GridPoint>& poly, const GridRect& r, Emit&& emit) {
+  const std::size_t n = poly.size();
+  std::size_t corner = 0;  // the upper-right corner
+  while (!(poly[corner].u == r.u1 && poly[corner].v == r.v1)) ++corner;
+  auto a = [&](std::size_t i) { return i; };
+  auto b = [&](std::size_t j) { return j == 0 ? std::size_t{0} : n - j; };
+  const std::size_t m = corner, last = n - corner;  // A is a(0..m), B is b(0..last)
+  const double w = static_cast<double>(r.u1 - r.u0), h = static_cast<double>(r.v1 - r.v0);
+  auto diagonal2 = [&](std::size_t p, std::size_t q) {
+    const double du = static_cast<double>(poly[p].u - poly[q].u) / w;
+    const double dv = static_cast<double>(poly[p].v - poly[q].v) / h;
+    return du * du + dv * dv;
+  };
+  std::size_t i = 1, j = 0;
+  while (!(i == m && j == last - 1) && !(i == m - 1 && j == last)) {
+    const bool can_a =
+        i < m && (i + 1 < m || j == last - 1) && doubled_area(poly[a(i)], poly[a(i + 1)], poly[b(j)]) != 0;
+    const bool can_b =
+        j < last && (j + 1 < last || i == m - 1) && doubled_area(poly[a(i)], poly[b(j + 1)], poly[b(j)]) != 0;
+    if (can_a && (!can_b || diagonal2(a(i + 1), b(j)) <= diagonal2(a(i), b(j + 1)))) {
+      emit(a(i), a(i + 1), b(j));
+      ++i;
+    } else {
+      emit(a(i), b(j + 1), b(j));
+      ++j;
+    }
+  }
+}
+
 }  // namespace
 
 LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leaves, const EdgeTopology& topology) {
@@ -75,7 +118,7 @@ LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leave
 
   // One polygon per leaf, as grid points; then index them.
   std::vector<std::vector<GridPoint>> polygons;
-  std::vector<GridPoint> centres;  // per polygon; only used for fans
+  std::vector<GridRect> rects;  // per polygon
   for (std::uint32_t p = 0; p < leaves.size(); ++p)
     for (const Leaf& l : leaves[p]) {
       const GridRect& r = l.rect;
@@ -89,14 +132,11 @@ LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leave
       const std::size_t left = poly.size();
       points_between(g.cols[r.u0], r.v0 + 1, r.v1 + 1, [&](std::int64_t v) { poly.push_back({p, r.u0, v}); });
       std::reverse(poly.begin() + static_cast<std::ptrdiff_t>(left), poly.end());
-      centres.push_back({p, (r.u0 + r.u1) / 2, (r.v0 + r.v1) / 2});
+      rects.push_back(r);
       polygons.push_back(std::move(poly));
     }
   LeafTriangulation out;
-  for (std::size_t i = 0; i < polygons.size(); ++i) {
-    out.points.insert(out.points.end(), polygons[i].begin(), polygons[i].end());
-    if (polygons[i].size() > 4) out.points.push_back(centres[i]);
-  }
+  for (const std::vector<GridPoint>& poly : polygons) out.points.insert(out.points.end(), poly.begin(), poly.end());
   std::sort(out.points.begin(), out.points.end());
   out.points.erase(std::unique(out.points.begin(), out.points.end()), out.points.end());
   auto index = [&](const GridPoint& g) {
@@ -108,9 +148,9 @@ LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leave
       out.quads.push_back({index(poly[0]), index(poly[1]), index(poly[2]), index(poly[3])});
       continue;
     }
-    const std::uint32_t c = index(centres[i]);
-    for (std::size_t k = 0; k < poly.size(); ++k)
-      out.triangles.push_back({c, index(poly[k]), index(poly[(k + 1) % poly.size()])});
+    zip_polygon(poly, rects[i], [&](std::size_t a, std::size_t b, std::size_t c) {
+      out.triangles.push_back({index(poly[a]), index(poly[b]), index(poly[c])});
+    });
   }
 
   // Seams and poles: points that are one surface point share the smallest as representative.

@@ -3,9 +3,10 @@
 //
 // A leaf's boundary points are its corners and every corner of another leaf on its edges
 // (on a glued patch edge: also the partner edge's points, mapped). A leaf with only its four
-// corners is a quad (split later along its shorter diagonal in space); any other is fanned
-// from its centre, which keeps every triangle non-degenerate in parameter space and makes
-// every interior edge shared by exactly two triangles.
+// corners is a quad (split later along its shorter diagonal in space); any other polygon of
+// n points is cut into n - 2 triangles without an extra point (a zipper between its two
+// chains, never a triangle of points on one edge), which keeps every triangle non-degenerate
+// in parameter space and makes every interior edge shared by exactly two triangles.
 #pragma once
 
 #include "edge_gluing.hpp"

@@ -27,8 +27,9 @@
 //     or a pole use one sample for several parameter points; the largest such deviation is
 //     measured and added.
 //  2. Conforming. Every corner of a leaf that lies on another leaf's edge is a vertex of both
-//     (Fig 5.18): a leaf with such points is fanned from its centre, any other leaf split along
-//     its shorter diagonal; so every interior edge belongs to exactly two triangles.
+//     (Fig 5.18): a leaf with n such boundary points is cut into n - 2 non-degenerate
+//     triangles between them, any other leaf split along its shorter diagonal; so every
+//     interior edge belongs to exactly two triangles.
 //  3. One vertex per surface point at seams and poles. Periodic axes glue their two edges;
 //     with `glue_edges`, edges that coincide geometrically (a solid's faces, a cylinder not
 //     marked periodic, patches of one object) are glued too, and edges that collapse to a point
