@@ -488,8 +488,8 @@ void Search::try_certified_around(std::span<const double> q) {
   if (q.size() != root_.size()) return;
   Box around(q.size());
   for (std::size_t i = 0; i < q.size(); ++i) {
-    const double r = 1e-7 * (1.0 + std::abs(q[i]));
     if (!std::isfinite(q[i])) return;
+    const double r = 1e-7 * (1.0 + std::abs(q[i]));
     around[i] = intersect(Interval(q[i] - r, q[i] + r), root_[i]);
     if (around[i].is_empty()) return;
   }
