@@ -34,32 +34,21 @@ __attribute__((target_clones("avx2", "default"))) void run_tape(const Clause* cl
     // Operand rows; fields that are not registers (constant index, input position, slot)
     // are mapped to row 0 so that no pointer leaves the register file.
     const int ar = arity(c.op);
-    const bool imm = c.op >= Op::AddImm && c.op <= Op::MaxImm;
+    const bool imm = has_immediate(c.op);
     double* out = regs + std::size_t{c.out} * W;
     const double* a = regs + (ar >= 1 ? std::size_t{c.a} * W : 0);
     const double* b = regs + (ar >= 2 && !imm ? std::size_t{c.b} * W : 0);
     const double* cc = regs + (ar >= 3 ? std::size_t{c.c} * W : 0);
     switch (c.op) {
-#define GENMOD_UNARY(NAME) \
-  case Op::NAME: run_clause<Op::NAME>(out, a, a, a, n); break;
-#define GENMOD_BINARY(NAME) \
-  case Op::NAME: run_clause<Op::NAME>(out, a, b, a, n); break;
-#define GENMOD_IMM(NAME) \
-  case Op::NAME: run_clause_imm<Op::NAME>(out, a, constants[c.b], n); break;
-      GENMOD_UNARY(Neg) GENMOD_UNARY(Square) GENMOD_UNARY(Sqrt) GENMOD_UNARY(Exp) GENMOD_UNARY(Log)
-      GENMOD_UNARY(Sin) GENMOD_UNARY(Cos) GENMOD_UNARY(Tan) GENMOD_UNARY(Asin) GENMOD_UNARY(Acos)
-      GENMOD_UNARY(Atan) GENMOD_UNARY(Abs) GENMOD_UNARY(Floor) GENMOD_UNARY(Ceil) GENMOD_UNARY(Not)
-      GENMOD_UNARY(IsError)
-      GENMOD_BINARY(Add) GENMOD_BINARY(Sub) GENMOD_BINARY(Mul) GENMOD_BINARY(Div) GENMOD_BINARY(Pow)
-      GENMOD_BINARY(Atan2) GENMOD_BINARY(Min) GENMOD_BINARY(Max) GENMOD_BINARY(Lt) GENMOD_BINARY(Le)
-      GENMOD_BINARY(Gt) GENMOD_BINARY(Ge) GENMOD_BINARY(Eq) GENMOD_BINARY(Ne) GENMOD_BINARY(And)
-      GENMOD_BINARY(Or)
-      GENMOD_IMM(AddImm) GENMOD_IMM(MulImm) GENMOD_IMM(SubImm) GENMOD_IMM(DivImmR) GENMOD_IMM(DivImmL)
-      GENMOD_IMM(MinImm) GENMOD_IMM(MaxImm)
-#undef GENMOD_UNARY
-#undef GENMOD_BINARY
-#undef GENMOD_IMM
-      case Op::Select: run_clause<Op::Select>(out, a, b, cc, n); break;
+#define GENMOD_CASE(NAME, TEXT, ARITY, FLAGS)                                \
+  case Op::NAME:                                                            \
+    if constexpr (has_immediate(Op::NAME))                                  \
+      run_clause_imm<Op::NAME>(out, a, constants[c.b], n);                  \
+    else                                                                    \
+      run_clause<Op::NAME>(out, a, ARITY >= 2 ? b : a, ARITY >= 3 ? cc : a, n); \
+    break;
+      GENMOD_ARITHMETIC_OPCODES(GENMOD_CASE)
+#undef GENMOD_CASE
       case Op::Const: std::fill(out, out + n, constants[c.a]); break;
       case Op::Load:
         if (stride == 1) {
@@ -83,7 +72,7 @@ __attribute__((target_clones("avx2", "default"))) void run_tape(const Clause* cl
         break;
       }
       case Op::CallOut: std::copy(slots.data() + std::size_t{c.a} * W, slots.data() + std::size_t{c.a} * W + n, out); break;
-      default: break;
+      case Op::Var: case Op::Custom: break;  // never on tapes
     }
   }
 }

@@ -2,6 +2,7 @@
 #include "genmod/kernel/dag.hpp"
 
 #include "genmod/kernel/custom_op.hpp"
+#include "point_ops.hpp"
 
 #include <algorithm>
 #include <array>
@@ -357,25 +358,11 @@ NodeId intern(Op op, NodeId a, NodeId b, NodeId c, std::int32_t index, double va
 // Folds an operation on constants when the double result is exact, so the folded constant
 // is the real value (folding sin(1) to a double would lose the inclusion's rigor).
 bool fold(Op op, double a, double b, double c, double* out) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (is_exact(op)) {  // the point rule's double is the real result (opcode table)
+    *out = detail::point_value(op, a, b, c);
+    return true;
+  }
   switch (op) {
-    case Op::Neg: *out = -a; return true;
-    case Op::Abs: *out = std::fabs(a); return true;
-    case Op::Floor: *out = std::floor(a); return true;
-    case Op::Ceil: *out = std::ceil(a); return true;
-    case Op::Min: *out = point::min(a, b); return true;
-    case Op::Max: *out = point::max(a, b); return true;
-    case Op::Lt: *out = (a != a || b != b) ? nan : double(a < b); return true;
-    case Op::Le: *out = (a != a || b != b) ? nan : double(a <= b); return true;
-    case Op::Gt: *out = (a != a || b != b) ? nan : double(a > b); return true;
-    case Op::Ge: *out = (a != a || b != b) ? nan : double(a >= b); return true;
-    case Op::Eq: *out = (a != a || b != b) ? nan : double(a == b); return true;
-    case Op::Ne: *out = (a != a || b != b) ? nan : double(a != b); return true;
-    case Op::And: *out = (a != a || b != b) ? nan : double(a != 0 && b != 0); return true;
-    case Op::Or: *out = (a != a || b != b) ? nan : double(a != 0 || b != 0); return true;
-    case Op::Not: *out = (a != a) ? nan : double(a == 0); return true;
-    case Op::IsError: *out = double(a != a); return true;
-    case Op::Select: *out = (a != a) ? nan : (a != 0 ? b : c); return true;
     case Op::Add: {
       const double s = a + b;
       if (!std::isfinite(s)) return false;

@@ -149,9 +149,12 @@ class Differentiator : private Builder {
       case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne:
       case Op::And: case Op::Or: case Op::Const:
         return c(0.0);
-      default:
-        throw std::logic_error("genmod: derivative: unexpected op " + std::string(op_name(n.op)));
+      // Tape-only forms never occur in the DAG.
+      case Op::AddImm: case Op::MulImm: case Op::SubImm: case Op::DivImmR: case Op::DivImmL: case Op::MinImm:
+      case Op::MaxImm: case Op::Load: case Op::Call: case Op::CallOut:
+        break;
     }
+    throw std::logic_error("genmod: derivative: unexpected op " + std::string(op_name(n.op)));
   }
 
   // Chain rule: sum over arguments k of (d out_j / d arg_k) * arg_k'.

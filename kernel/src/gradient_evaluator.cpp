@@ -10,17 +10,6 @@
 namespace genmod {
 namespace {
 
-// Value of clause c at a point (the same semantics as the point evaluators).
-double clause_value(const Clause& c, double a, double b, double cc, double k) {
-  switch (c.op) {
-#define GENMOD_CASE(NAME) \
-  case Op::NAME: return detail::point_op<Op::NAME>(a, (Op::NAME >= Op::AddImm) ? k : b, cc);
-    GENMOD_FOR_EACH_ARITH_OP(GENMOD_CASE)
-#undef GENMOD_CASE
-    default: return detail::kNaN;
-  }
-}
-
 // The Jacobian of a custom operator's outputs with respect to its arguments, as a tape in
 // the argument values (built once per operator from its symbolic derivative).
 Tape custom_partials_tape(const CustomOp& op) {
@@ -51,7 +40,7 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
     double* out = &regs_[std::size_t{c.out} * stride];
     // Operand rows (only those the clause has; the others alias a harmless row).
     const int ar = arity(c.op);
-    const bool imm_form = c.op >= Op::AddImm && c.op <= Op::MaxImm;
+    const bool imm_form = has_immediate(c.op);
     const double* a = &regs_[ar >= 1 ? std::size_t{c.a} * stride : 0];
     const double* b = &regs_[ar >= 2 && !imm_form ? std::size_t{c.b} * stride : 0];
     const double* cc = &regs_[ar >= 3 ? std::size_t{c.c} * stride : 0];
@@ -95,7 +84,7 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
       case Op::Const: v = konst[c.a]; break;
       case Op::Load: v = point[c.a]; break;
       case Op::CallOut: v = slots_[std::size_t{c.a} * stride]; break;
-      default: v = clause_value(c, av, bv, cv, k); break;
+      default: v = detail::point_value(c.op, av, bv, cv); break;
     }
     switch (c.op) {
       case Op::Neg: da = -1.0; break;
@@ -134,7 +123,12 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
       case Op::DivImmL: da = -v / av; break;
       case Op::MinImm: da = av < k ? 1.0 : 0.0; break;
       case Op::MaxImm: da = av > k ? 1.0 : 0.0; break;
-      default: break;  // piecewise constant, constants, loads, call outputs
+      // Piecewise constant: derivative 0 wherever it exists.
+      case Op::Floor: case Op::Ceil: case Op::Not: case Op::IsError: case Op::Lt: case Op::Le: case Op::Gt:
+      case Op::Ge: case Op::Eq: case Op::Ne: case Op::And: case Op::Or:
+      // Leaves and plumbing: set below.
+      case Op::Const: case Op::Var: case Op::Custom: case Op::Load: case Op::Call: case Op::CallOut:
+        break;
     }
     // Partials into a temporary first: `out` may alias an operand.
     double* g = scratch_.data();

@@ -141,20 +141,27 @@ inline Interval rounded_floor_like(const Interval& x, bool is_floor, bool& jump)
 }  // namespace
 
 std::span<const Interval> IntervalEvaluator::eval(const Tape& tape, std::span<const Interval> box) {
+  run(tape, box, tape.clauses(), tape.call_arg_registers(), tape.num_registers());
+  finish(tape.output_registers());
+  return out_;
+}
+
+void IntervalEvaluator::run(const Tape& tape, std::span<const Interval> box, std::span<const Clause> clauses,
+                            std::span<const std::uint32_t> call_args, std::uint32_t num_registers) {
   detail::check_inputs(tape, box.size(), "IntervalEvaluator");
   for (std::size_t k = 0; k < box.size(); ++k) {
     const Interval& b = box[k];
     if (!b.is_empty() && !(b.lo() <= b.hi() && b.lo() < kInf && b.hi() > -kInf))
       throw std::invalid_argument("genmod: IntervalEvaluator: input " + std::to_string(k) + " is not a legal interval");
   }
-  const auto clauses = tape.clauses();
   const std::span<const double> k = tape.constants();
-  regs_.resize(tape.num_registers());
-  err_.assign(tape.num_registers(), kNoError);
+  regs_.resize(num_registers);
+  err_.assign(num_registers, kNoError);
   slots_.resize(tape.num_call_slots());
   slot_err_.resize(tape.num_call_slots());
   choices_.assign(clauses.size(), kChoiceBoth);
   clauses_base_ = clauses.data();
+  call_args_src_ = call_args;
   bool jump = false;  // some discontinuity may lie in the box
 
   Interval* r = regs_.data();
@@ -270,15 +277,18 @@ std::span<const Interval> IntervalEvaluator::eval(const Tape& tape, std::span<co
       }
     }
   }
-  out_.resize(tape.num_outputs());
-  out_err_.resize(tape.num_outputs());
-  continuous_ = !jump;
+  jump_ = jump;
+}
+
+void IntervalEvaluator::finish(std::span<const std::uint32_t> output_registers) {
+  out_.resize(output_registers.size());
+  out_err_.resize(output_registers.size());
+  continuous_ = !jump_;
   for (std::size_t j = 0; j < out_.size(); ++j) {
-    out_[j] = r[tape.output_registers()[j]];
-    out_err_[j] = e[tape.output_registers()[j]];
+    out_[j] = regs_[output_registers[j]];
+    out_err_[j] = err_[output_registers[j]];
     if (out_err_[j] != kNoError) continuous_ = false;
   }
-  return out_;
 }
 
 // The less frequent operations, out of the hot loop. `err` holds the first operand's error
@@ -358,8 +368,18 @@ Interval IntervalEvaluator::other_op(const Clause& c, std::span<const double> k,
       jump = true;
       return hull(b, otherwise);
     }
-    default: return Interval::entire();  // not reached: every opcode is handled
+    // Handled by eval's loop or by the unary switch above; Var and Custom are never on
+    // tapes. Listed (no default) so that an opcode added to the table without an enclosure
+    // does not compile.
+    case Op::Const: case Op::Var: case Op::Neg: case Op::Square: case Op::Sqrt: case Op::Exp: case Op::Log:
+    case Op::Sin: case Op::Cos: case Op::Tan: case Op::Asin: case Op::Acos: case Op::Atan: case Op::Abs:
+    case Op::Floor: case Op::Ceil: case Op::Not: case Op::IsError: case Op::Add: case Op::Sub: case Op::Mul:
+    case Op::Min: case Op::Max: case Op::Custom: case Op::AddImm: case Op::MulImm: case Op::SubImm:
+    case Op::DivImmR: case Op::DivImmL: case Op::MinImm: case Op::MaxImm: case Op::Load: case Op::Call:
+    case Op::CallOut:
+      break;
   }
+  return Interval::entire();  // not reached
 }
 
 // Runs custom call site `call`; custom operators use protected arithmetic in the default
@@ -370,7 +390,7 @@ bool IntervalEvaluator::call(const Tape& tape, std::uint32_t call) {
   call_args_.resize(cs.num_args);
   std::uint8_t arg_err = kNoError;
   for (std::uint32_t j = 0; j < cs.num_args; ++j) {
-    const std::uint32_t reg = tape.call_arg_registers()[cs.first_arg + j];
+    const std::uint32_t reg = call_args_src_[cs.first_arg + j];
     call_args_[j] = regs_[reg];
     arg_err |= err_[reg];
   }

@@ -13,12 +13,9 @@ std::span<const double> PointEvaluator::eval(const Tape& tape, std::span<const d
   double* r = regs_.data();
   for (const Clause& c : tape.clauses()) {
     switch (c.op) {
-#define GENMOD_CASE(NAME)                                                                                  \
-  case Op::NAME:                                                                                           \
-    r[c.out] = detail::point_op<Op::NAME>(r[c.a], (Op::NAME >= Op::AddImm) ? k[c.b] : r[arity(Op::NAME) >= 2 ? c.b : c.a], \
-                                          r[arity(Op::NAME) >= 3 ? c.c : c.a]);                            \
-    break;
-      GENMOD_FOR_EACH_ARITH_OP(GENMOD_CASE)
+#define GENMOD_CASE(NAME, TEXT, ARITY, FLAGS) \
+  case Op::NAME: r[c.out] = detail::point_clause<Op::NAME>(r, k.data(), c.a, c.b, c.c); break;
+      GENMOD_ARITHMETIC_OPCODES(GENMOD_CASE)
 #undef GENMOD_CASE
       case Op::Const: r[c.out] = k[c.a]; break;
       case Op::Load: r[c.out] = point[c.a]; break;
@@ -30,7 +27,7 @@ std::span<const double> PointEvaluator::eval(const Tape& tape, std::span<const d
         break;
       }
       case Op::CallOut: r[c.out] = slots_[c.a]; break;
-      default: break;  // Var / Custom never appear on tapes
+      case Op::Var: case Op::Custom: break;  // never on tapes
     }
   }
   out_.resize(tape.num_outputs());

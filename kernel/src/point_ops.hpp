@@ -8,6 +8,7 @@
 #include "genmod/kernel/opcode.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace genmod::detail {
@@ -55,14 +56,28 @@ inline double point_op(double a, double b, double c) noexcept {
   else if constexpr (op == Op::And) return either_nan(a, b) ? kNaN : truth(a != 0.0 && b != 0.0);
   else if constexpr (op == Op::Or) return either_nan(a, b) ? kNaN : truth(a != 0.0 || b != 0.0);
   else if constexpr (op == Op::Select) return a != a ? kNaN : (a != 0.0 ? b : c);
-  else static_assert(op == Op::Neg, "point_op: not an arithmetic opcode");
+  else static_assert(op == Op::Neg, "point_op: an arithmetic opcode without a point rule");
 }
 
-// Expands F(std::integral_constant<Op, op>) for every arithmetic opcode in a switch.
-#define GENMOD_FOR_EACH_ARITH_OP(X)                                                                       \
-  X(Neg) X(Square) X(Sqrt) X(Exp) X(Log) X(Sin) X(Cos) X(Tan) X(Asin) X(Acos) X(Atan) X(Abs) X(Floor) \
-  X(Ceil) X(Not) X(IsError) X(Add) X(Sub) X(Mul) X(Div) X(Pow) X(Atan2) X(Min) X(Max) X(Lt) X(Le)    \
-  X(Gt) X(Ge) X(Eq) X(Ne) X(And) X(Or) X(Select) X(AddImm) X(MulImm) X(SubImm) X(DivImmR) X(DivImmL) \
-  X(MinImm) X(MaxImm)
+// The point rule of clause c over a register file r and the tape's constants k (the operand
+// positions follow the opcode table's arity and immediate flag).
+template <Op op>
+inline double point_clause(const double* r, const double* k, std::uint32_t a, std::uint32_t b, std::uint32_t c) noexcept {
+  constexpr int n = arity(op);
+  const double second = has_immediate(op) ? k[b] : r[n >= 2 ? b : a];
+  return point_op<op>(r[a], second, r[n >= 3 ? c : a]);
+}
+
+// The point rule of an arithmetic opcode chosen at run time (b is the second operand or the
+// immediate); NaN for the others, which have no point rule of their own.
+inline double point_value(Op op, double a, double b, double c) noexcept {
+  switch (op) {
+#define GENMOD_CASE(NAME, TEXT, ARITY, FLAGS) \
+  case Op::NAME: return point_op<Op::NAME>(a, b, c);
+    GENMOD_ARITHMETIC_OPCODES(GENMOD_CASE)
+#undef GENMOD_CASE
+    default: return kNaN;
+  }
+}
 
 }  // namespace genmod::detail

@@ -62,7 +62,7 @@ std::uint32_t field(const Clause& c, unsigned k) noexcept {
 // Register operands by opcode (arity() as a table).
 constexpr auto kArity = [] {
   std::array<std::uint8_t, 256> t{};
-  for (std::size_t op = 0; op < t.size(); ++op) t[op] = static_cast<std::uint8_t>(arity(static_cast<Op>(op)));
+  for (int op = 0; op < kNumOps; ++op) t[static_cast<std::size_t>(op)] = static_cast<std::uint8_t>(arity(static_cast<Op>(op)));
   return t;
 }();
 
@@ -485,6 +485,7 @@ std::span<const std::uint32_t> Tape::call_arg_registers() const noexcept { retur
 std::uint32_t Tape::num_registers() const noexcept { return data_->num_registers; }
 std::span<const Clause> Tape::ssa() const noexcept { return data_->ssa(); }
 std::span<const std::uint32_t> Tape::output_values() const noexcept { return data_->ssa_outputs(); }
+std::span<const std::uint32_t> Tape::call_arg_values() const noexcept { return data_->ssa_call_args(); }
 std::uint32_t Tape::num_values() const noexcept { return data_->common->num_values; }
 std::span<const double> Tape::constants() const noexcept { return data_->common->constants; }
 std::span<const int> Tape::inputs() const noexcept { return data_->common->inputs; }
@@ -524,7 +525,7 @@ std::string Tape::disassemble() const {
       default: {
         const int ar = arity(c.op);
         if (ar >= 1) os << " r" << c.a;
-        if (c.op >= Op::AddImm && c.op <= Op::MaxImm) os << ' ' << k[c.b];
+        if (has_immediate(c.op)) os << ' ' << k[c.b];
         else if (ar >= 2) os << " r" << c.b;
         if (ar >= 3) os << " r" << c.c;
       }

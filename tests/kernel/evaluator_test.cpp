@@ -125,7 +125,7 @@ void expect_well_formed(const Tape& t) {
   for (std::size_t i = 0; i < ssa.size(); ++i) {
     ASSERT_EQ(reg[i].op, ssa[i].op);
     const int ar = arity(ssa[i].op);
-    const bool imm = ssa[i].op >= Op::AddImm && ssa[i].op <= Op::MaxImm;
+    const bool imm = has_immediate(ssa[i].op);
     if (ar >= 1) check_value(ssa[i].a);
     if (ar >= 2 && !imm) check_value(ssa[i].b);
     if (ar >= 3) check_value(ssa[i].c);

@@ -40,8 +40,15 @@ class IntervalEvaluator {
   bool continuous() const noexcept { return continuous_; }
 
  private:
+  friend class TapeContractor;  // evaluates the SSA form (every value, by id)
+
+  // Runs `clauses` (the tape's register or SSA form, with the matching call arguments) over a
+  // register file of `num_registers`; the outputs are left in regs_ / err_.
+  void run(const Tape& tape, std::span<const Interval> box, std::span<const Clause> clauses,
+           std::span<const std::uint32_t> call_args, std::uint32_t num_registers);
   Interval other_op(const Clause& c, std::span<const double> k, std::uint8_t& err, bool& jump);
   bool call(const Tape& tape, std::uint32_t call);
+  void finish(std::span<const std::uint32_t> output_registers);
 
   std::vector<Interval> regs_;
   std::vector<std::uint8_t> err_;
@@ -52,6 +59,8 @@ class IntervalEvaluator {
   std::vector<std::uint8_t> choices_;
   std::vector<Interval> call_args_;
   const Clause* clauses_base_ = nullptr;  // the clauses being evaluated (for choices of select)
+  std::span<const std::uint32_t> call_args_src_;  // the call arguments' registers (or SSA values)
+  bool jump_ = false;                             // some discontinuity may lie in the box
   bool continuous_ = true;
 };
 

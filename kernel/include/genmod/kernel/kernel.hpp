@@ -12,4 +12,5 @@
 #include "genmod/kernel/opcode.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
+#include "genmod/kernel/tape_contractor.hpp"
 #include "genmod/kernel/vm_format.hpp"

@@ -94,6 +94,7 @@ class Tape {
   // output_values()[j].
   std::span<const Clause> ssa() const noexcept;
   std::span<const std::uint32_t> output_values() const noexcept;
+  std::span<const std::uint32_t> call_arg_values() const noexcept;  // as call_arg_registers()
   std::uint32_t num_values() const noexcept;
 
   std::span<const double> constants() const noexcept;

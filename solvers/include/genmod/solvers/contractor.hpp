@@ -1,13 +1,12 @@
 // Forward-backward (HC4-revise) contraction of a box against a ConstraintSystem
 // (Benhamou et al. 1999; IBEX's CtcHC4, research/anchors.md section 4).
 //
-// For each atom h rel 0 the tape of h is evaluated forward over the box, one interval per SSA
-// clause; the root interval is intersected with the set the relation allows ([0,0] for ==,
-// (-inf,0] for < and <=, [0,inf) for > and >=), and the result is projected back through every
-// clause onto its operands (inverse of + - * / neg square sqrt exp log abs min max and their
-// immediate forms; other operations leave their operands unchanged). The projections onto the
-// loads shrink the unknowns' sides. && contracts with each side in turn, || takes the hull of
-// the contractions of both sides, ! is pushed into the relations.
+// For each atom h rel 0 the kernel's TapeContractor (genmod/kernel/tape_contractor.hpp)
+// evaluates the tape of h forward with the kernel's enclosures, intersects the root with the
+// set the relation allows ([0,0] for ==, (-inf,0] for < and <=, [0,inf) for > and >=), and
+// projects the result back through the clauses onto the unknowns. && contracts with each
+// side in turn, || takes the hull of the contractions of both sides, ! is pushed into the
+// relations.
 //
 // Soundness: every projection is computed with outward-rounded interval operations, so a
 // point of the box that satisfies the constraint is never removed. Points where h fails (sqrt
@@ -22,6 +21,7 @@
 //   bool maybe = hc4.contract(b);             // b shrinks to about [0.99, 1] x [-0.1, 0.1]
 #pragma once
 
+#include "genmod/kernel/tape_contractor.hpp"
 #include "genmod/solvers/box.hpp"
 #include "genmod/solvers/constraint_system.hpp"
 
@@ -44,8 +44,8 @@ class Hc4Contractor {
   // Contracts against one atom with an explicit relation (h rel 0). False when no point fits.
   bool contract_atom(std::size_t atom, Relation rel, std::span<Interval> box);
 
-  // Whether the forward-backward pass supports atom i (every op of its tape has a sound
-  // forward rule; otherwise the atom is skipped, which is always sound).
+  // Whether atom i gets the backward projection (TapeContractor::projects: its tape has no
+  // select, is-error or custom call); every atom gets the forward check.
   bool supports(std::size_t atom) const { return supported_.at(atom) != 0; }
 
  private:
@@ -53,7 +53,7 @@ class Hc4Contractor {
 
   const ConstraintSystem* sys_;
   std::vector<std::uint8_t> supported_;
-  std::vector<Interval> v_;  // one interval per SSA clause
+  TapeContractor tape_;
 };
 
 }  // namespace genmod
