@@ -5,6 +5,7 @@
 #pragma once
 
 #include "genmod/kernel/tape.hpp"
+#include "kernel/src/tape_data.hpp"
 
 #include <span>
 #include <stdexcept>
@@ -25,7 +26,7 @@ class TapeInterpreter {
     const std::span<const double> k = tape_.constants();
     I* r = regs_.data();
     // The operations resolve by argument-dependent lookup to those of I.
-    for (const Clause& c : tape_.clauses()) {
+    for (const Clause& c : detail::clauses(tape_)) {
       switch (c.op) {
         case Op::Const: r[c.out] = I(k[c.a]); break;
         case Op::Load: r[c.out] = box[c.a]; break;
@@ -46,7 +47,7 @@ class TapeInterpreter {
           throw std::invalid_argument("genmod bench: the baseline interpreter has no " + std::string(op_name(c.op)));
       }
     }
-    return r[tape_.output_registers()[0]];
+    return r[detail::output_registers(tape_)[0]];
   }
 
  private:

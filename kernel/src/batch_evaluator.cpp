@@ -1,5 +1,7 @@
 #include "genmod/kernel/batch_evaluator.hpp"
 
+#include "tape_data.hpp"
+
 #include "custom_call.hpp"
 #include "point_ops.hpp"
 
@@ -60,12 +62,12 @@ __attribute__((target_clones("avx2", "default"))) void run_tape(const Clause* cl
         break;
       case Op::Call: {
         // Custom operators are called point by point; their outputs go to per-slot rows.
-        const CallSite& cs = tape.calls()[c.a];
+        const CallSite& cs = detail::calls(tape)[c.a];
         args.resize(cs.num_args);
-        call_out.resize(tape.num_call_slots());
+        call_out.resize(detail::num_call_slots(tape));
         for (std::size_t p = 0; p < n; ++p) {
           for (std::uint32_t i = 0; i < cs.num_args; ++i)
-            args[i] = regs[std::size_t{tape.call_arg_registers()[cs.first_arg + i]} * W + p];
+            args[i] = regs[std::size_t{detail::call_arg_registers(tape)[cs.first_arg + i]} * W + p];
           detail::run_call_point(tape, c.a, args, call_out);
           for (std::uint32_t j = 0; j < cs.num_outputs; ++j) slots[(cs.first_slot + j) * W + p] = call_out[cs.first_slot + j];
         }
@@ -88,7 +90,7 @@ void BatchEvaluator::eval(const Tape& tape, std::span<const double* const> input
     throw std::invalid_argument("genmod: BatchEvaluator: the tape has " + std::to_string(tape.num_outputs()) +
                                 " outputs, got " + std::to_string(outputs.size()) + " output arrays");
   regs_.resize(std::size_t{tape.num_registers()} * kChunk);
-  slots_.resize(std::size_t{tape.num_call_slots()} * kChunk);
+  slots_.resize(std::size_t{detail::num_call_slots(tape)} * kChunk);
   for (std::size_t offset = 0; offset < count; offset += kChunk)
     run_chunk(tape, inputs, offset, std::min(kChunk, count - offset), outputs, input_stride, output_stride);
 }
@@ -96,11 +98,11 @@ void BatchEvaluator::eval(const Tape& tape, std::span<const double* const> input
 void BatchEvaluator::run_chunk(const Tape& tape, std::span<const double* const> inputs, std::size_t offset,
                                std::size_t n, std::span<double* const> outputs, std::size_t input_stride,
                                std::size_t output_stride) {
-  const auto clauses = tape.clauses();
+  const auto clauses = detail::clauses(tape);
   run_tape(clauses.data(), clauses.size(), tape.constants().data(), regs_.data(), inputs.data(), offset, input_stride,
            n, tape, slots_, args_, call_out_);
   for (std::size_t j = 0; j < outputs.size(); ++j) {
-    const double* r = regs_.data() + std::size_t{tape.output_registers()[j]} * kChunk;
+    const double* r = regs_.data() + std::size_t{detail::output_registers(tape)[j]} * kChunk;
     if (output_stride == 1) {
       std::copy(r, r + n, outputs[j] + offset);
     } else {

@@ -3,6 +3,7 @@
 
 #include "genmod/kernel/custom_op.hpp"
 #include "genmod/kernel/tape.hpp"
+#include "tape_data.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -14,7 +15,7 @@ namespace genmod::detail {
 // outputs into slots.
 inline void run_call_point(const Tape& tape, std::uint32_t call, std::span<const double> args,
                            std::span<double> slots) {
-  const CallSite& cs = tape.calls()[call];
+  const CallSite& cs = detail::calls(tape)[call];
   cs.op->eval(args, slots.subspan(cs.first_slot, cs.num_outputs));
 }
 

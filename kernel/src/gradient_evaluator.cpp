@@ -1,5 +1,7 @@
 #include "genmod/kernel/gradient_evaluator.hpp"
 
+#include "tape_data.hpp"
+
 #include "custom_call.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
 #include "point_ops.hpp"
@@ -32,11 +34,11 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
   const std::size_t n = tape.num_inputs();
   const std::size_t stride = n + 1;  // value, then partials
   regs_.assign(std::size_t{tape.num_registers()} * stride, 0.0);
-  slots_.assign(std::size_t{tape.num_call_slots()} * stride, 0.0);
+  slots_.assign(std::size_t{detail::num_call_slots(tape)} * stride, 0.0);
   scratch_.resize(stride);
   const std::span<const double> konst = tape.constants();
 
-  for (const Clause& c : tape.clauses()) {
+  for (const Clause& c : detail::clauses(tape)) {
     double* out = &regs_[std::size_t{c.out} * stride];
     // Operand rows (only those the clause has; the others alias a harmless row).
     const int ar = arity(c.op);
@@ -45,10 +47,10 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
     const double* b = &regs_[ar >= 2 && !imm_form ? std::size_t{c.b} * stride : 0];
     const double* cc = &regs_[ar >= 3 ? std::size_t{c.c} * stride : 0];
     if (c.op == Op::Call) {
-      const CallSite& cs = tape.calls()[c.a];
+      const CallSite& cs = detail::calls(tape)[c.a];
       const CustomOp& op = *cs.op;
-      std::vector<double> args(cs.num_args), outs(tape.num_call_slots());
-      for (std::uint32_t k = 0; k < cs.num_args; ++k) args[k] = regs_[std::size_t{tape.call_arg_registers()[cs.first_arg + k]} * stride];
+      std::vector<double> args(cs.num_args), outs(detail::num_call_slots(tape));
+      for (std::uint32_t k = 0; k < cs.num_args; ++k) args[k] = regs_[std::size_t{detail::call_arg_registers(tape)[cs.first_arg + k]} * stride];
       detail::run_call_point(tape, c.a, args, outs);
       // Keyed by address; the weak owner tells a live operator from a later one at the same
       // address after the first was destroyed.
@@ -58,7 +60,7 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
         it = custom_partials_.end();
       }
       if (it == custom_partials_.end())
-        it = custom_partials_.emplace(&op, CustomPartials{tape.custom_ops()[cs.op_index], custom_partials_tape(op)}).first;
+        it = custom_partials_.emplace(&op, CustomPartials{detail::custom_ops(tape)[cs.op_index], custom_partials_tape(op)}).first;
       PointEvaluator pe;
       const std::span<const double> partials = cs.num_args ? pe.eval(it->second.tape, args) : std::span<const double>{};
       for (std::uint32_t j = 0; j < cs.num_outputs; ++j) {
@@ -66,7 +68,7 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
         std::fill(slot, slot + stride, 0.0);
         slot[0] = outs[cs.first_slot + j];
         for (std::uint32_t k = 0; k < cs.num_args; ++k) {
-          const double* arg = &regs_[std::size_t{tape.call_arg_registers()[cs.first_arg + k]} * stride];
+          const double* arg = &regs_[std::size_t{detail::call_arg_registers(tape)[cs.first_arg + k]} * stride];
           const double p = partials[std::size_t{k} * cs.num_outputs + j];
           for (std::size_t i = 1; i < stride; ++i) slot[i] += p * arg[i];
         }
@@ -153,7 +155,7 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
   values_.resize(tape.num_outputs());
   jacobian_.resize(tape.num_outputs() * n);
   for (std::size_t j = 0; j < tape.num_outputs(); ++j) {
-    const double* r = &regs_[std::size_t{tape.output_registers()[j]} * stride];
+    const double* r = &regs_[std::size_t{detail::output_registers(tape)[j]} * stride];
     values_[j] = r[0];
     std::copy(r + 1, r + stride, jacobian_.begin() + static_cast<std::ptrdiff_t>(j * n));
   }

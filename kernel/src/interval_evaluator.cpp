@@ -1,5 +1,7 @@
 #include "genmod/kernel/interval_evaluator.hpp"
 
+#include "tape_data.hpp"
+
 #include "custom_call.hpp"
 
 #include <algorithm>
@@ -141,8 +143,8 @@ inline Interval rounded_floor_like(const Interval& x, bool is_floor, bool& jump)
 }  // namespace
 
 std::span<const Interval> IntervalEvaluator::eval(const Tape& tape, std::span<const Interval> box) {
-  run(tape, box, tape.clauses(), tape.call_arg_registers(), tape.num_registers());
-  finish(tape.output_registers());
+  run(tape, box, detail::clauses(tape), detail::call_arg_registers(tape), tape.num_registers());
+  finish(detail::output_registers(tape));
   return out_;
 }
 
@@ -157,8 +159,8 @@ void IntervalEvaluator::run(const Tape& tape, std::span<const Interval> box, std
   const std::span<const double> k = tape.constants();
   regs_.resize(num_registers);
   err_.assign(num_registers, kNoError);
-  slots_.resize(tape.num_call_slots());
-  slot_err_.resize(tape.num_call_slots());
+  slots_.resize(detail::num_call_slots(tape));
+  slot_err_.resize(detail::num_call_slots(tape));
   choices_.assign(clauses.size(), kChoiceBoth);
   clauses_base_ = clauses.data();
   call_args_src_ = call_args;
@@ -386,7 +388,7 @@ Interval IntervalEvaluator::other_op(const Clause& c, std::span<const double> k,
 // rounding mode, so the evaluator's upward mode is suspended around them. Returns whether the
 // operator is continuous on the arguments' box.
 bool IntervalEvaluator::call(const Tape& tape, std::uint32_t call) {
-  const CallSite& cs = tape.calls()[call];
+  const CallSite& cs = detail::calls(tape)[call];
   call_args_.resize(cs.num_args);
   std::uint8_t arg_err = kNoError;
   for (std::uint32_t j = 0; j < cs.num_args; ++j) {

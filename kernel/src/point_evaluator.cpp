@@ -1,5 +1,7 @@
 #include "genmod/kernel/point_evaluator.hpp"
 
+#include "tape_data.hpp"
+
 #include "custom_call.hpp"
 #include "point_ops.hpp"
 
@@ -8,10 +10,10 @@ namespace genmod {
 std::span<const double> PointEvaluator::eval(const Tape& tape, std::span<const double> point) {
   detail::check_inputs(tape, point.size(), "PointEvaluator");
   regs_.resize(tape.num_registers());
-  slots_.resize(tape.num_call_slots());
+  slots_.resize(detail::num_call_slots(tape));
   const std::span<const double> k = tape.constants();
   double* r = regs_.data();
-  for (const Clause& c : tape.clauses()) {
+  for (const Clause& c : detail::clauses(tape)) {
     switch (c.op) {
 #define GENMOD_CASE(NAME, TEXT, ARITY, FLAGS) \
   case Op::NAME: r[c.out] = detail::point_clause<Op::NAME>(r, k.data(), c.a, c.b, c.c); break;
@@ -20,9 +22,9 @@ std::span<const double> PointEvaluator::eval(const Tape& tape, std::span<const d
       case Op::Const: r[c.out] = k[c.a]; break;
       case Op::Load: r[c.out] = point[c.a]; break;
       case Op::Call: {
-        const CallSite& cs = tape.calls()[c.a];
+        const CallSite& cs = detail::calls(tape)[c.a];
         args_.resize(cs.num_args);
-        for (std::uint32_t i = 0; i < cs.num_args; ++i) args_[i] = r[tape.call_arg_registers()[cs.first_arg + i]];
+        for (std::uint32_t i = 0; i < cs.num_args; ++i) args_[i] = r[detail::call_arg_registers(tape)[cs.first_arg + i]];
         detail::run_call_point(tape, c.a, args_, slots_);
         break;
       }
@@ -31,7 +33,7 @@ std::span<const double> PointEvaluator::eval(const Tape& tape, std::span<const d
     }
   }
   out_.resize(tape.num_outputs());
-  for (std::size_t j = 0; j < out_.size(); ++j) out_[j] = r[tape.output_registers()[j]];
+  for (std::size_t j = 0; j < out_.size(); ++j) out_[j] = r[detail::output_registers(tape)[j]];
   return out_;
 }
 

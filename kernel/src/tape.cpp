@@ -2,6 +2,7 @@
 #include "genmod/kernel/tape.hpp"
 
 #include "genmod/kernel/custom_op.hpp"
+#include "tape_data.hpp"
 
 #include <algorithm>
 #include <array>
@@ -67,36 +68,6 @@ constexpr auto kArity = [] {
 }();
 
 }  // namespace
-
-// What a tape shares with every tape pruned from it.
-struct TapeCommon {
-  std::vector<double> constants;
-  std::vector<int> inputs;
-  // The operators the call sites point to, kept alive as long as the tape (and the tapes
-  // simplified from it) even when the Fn it was compiled from is gone.
-  std::vector<std::shared_ptr<const CustomOp>> ops;
-  std::uint32_t num_values = 0;  // SSA ids are below this
-  std::uint32_t num_slots = 0;
-};
-
-// Both forms in one vector each, so a pruned tape costs few allocations.
-struct TapeData {
-  std::shared_ptr<const TapeCommon> common;
-  std::vector<Clause> clauses;           // register form [0, size), then SSA form [size, 2 size)
-  std::vector<std::uint32_t> outputs;    // output registers, then output values
-  std::vector<CallSite> calls;
-  std::vector<std::uint32_t> call_args;  // argument registers, then argument values
-  std::uint32_t num_registers = 0;
-  bool has_choices = false;
-
-  std::size_t size() const noexcept { return clauses.size() / 2; }
-  std::span<const Clause> reg() const noexcept { return std::span(clauses).first(size()); }
-  std::span<const Clause> ssa() const noexcept { return std::span(clauses).subspan(size()); }
-  std::span<const std::uint32_t> reg_outputs() const noexcept { return std::span(outputs).first(outputs.size() / 2); }
-  std::span<const std::uint32_t> ssa_outputs() const noexcept { return std::span(outputs).subspan(outputs.size() / 2); }
-  std::span<const std::uint32_t> reg_call_args() const noexcept { return std::span(call_args).first(call_args.size() / 2); }
-  std::span<const std::uint32_t> ssa_call_args() const noexcept { return std::span(call_args).subspan(call_args.size() / 2); }
-};
 
 // The simplifier's scratch: between calls reg_of_ holds no register and alias_ is the
 // identity, so a call needs no clearing of arrays as long as the compiled tape.
@@ -479,19 +450,23 @@ std::shared_ptr<const TapeData> Tape::compile(const Fn& f, std::span<const int> 
 Tape::Tape(const Fn& f) : data_(compile(f, f.inputs())) {}
 Tape::Tape(const Fn& f, Coordinates inputs) : data_(compile(f, inputs)) {}
 
-std::span<const Clause> Tape::clauses() const noexcept { return data_->reg(); }
-std::span<const std::uint32_t> Tape::output_registers() const noexcept { return data_->reg_outputs(); }
-std::span<const std::uint32_t> Tape::call_arg_registers() const noexcept { return data_->reg_call_args(); }
-std::uint32_t Tape::num_registers() const noexcept { return data_->num_registers; }
-std::span<const Clause> Tape::ssa() const noexcept { return data_->ssa(); }
-std::span<const std::uint32_t> Tape::output_values() const noexcept { return data_->ssa_outputs(); }
-std::span<const std::uint32_t> Tape::call_arg_values() const noexcept { return data_->ssa_call_args(); }
-std::uint32_t Tape::num_values() const noexcept { return data_->common->num_values; }
+namespace detail {
+const TapeData& tape_data(const Tape& tape) noexcept { return *tape.data_; }
+}  // namespace detail
+
 std::span<const double> Tape::constants() const noexcept { return data_->common->constants; }
 std::span<const int> Tape::inputs() const noexcept { return data_->common->inputs; }
-std::span<const CallSite> Tape::calls() const noexcept { return data_->calls; }
-std::span<const std::shared_ptr<const CustomOp>> Tape::custom_ops() const noexcept { return data_->common->ops; }
-std::uint32_t Tape::num_call_slots() const noexcept { return data_->common->num_slots; }
+std::size_t Tape::num_outputs() const noexcept { return data_->reg_outputs().size(); }
+std::size_t Tape::size() const noexcept { return data_->size(); }
+std::uint32_t Tape::num_registers() const noexcept { return data_->num_registers; }
+std::size_t Tape::count(Op op) const noexcept {
+  const auto reg = data_->reg();
+  return static_cast<std::size_t>(std::count_if(reg.begin(), reg.end(), [op](const Clause& c) { return c.op == op; }));
+}
+std::size_t Tape::memory_bytes() const noexcept {
+  return sizeof(TapeData) + data_->clauses.size() * sizeof(Clause) + data_->outputs.size() * sizeof(std::uint32_t) +
+         data_->calls.size() * sizeof(CallSite) + data_->call_args.size() * sizeof(std::uint32_t);
+}
 bool Tape::has_choices() const noexcept { return data_->has_choices; }
 
 Tape Tape::simplify(std::span<const std::uint8_t> choices) const {
@@ -515,7 +490,7 @@ Tape Tape::simplify(std::span<const std::uint8_t> choices, TapeSimplifier& scrat
 std::string Tape::disassemble() const {
   std::ostringstream os;
   const auto k = constants();
-  for (const Clause& c : clauses()) {
+  for (const Clause& c : data_->reg()) {
     os << 'r' << c.out << " = " << op_name(c.op);
     switch (c.op) {
       case Op::Const: os << ' ' << k[c.a]; break;
@@ -533,7 +508,7 @@ std::string Tape::disassemble() const {
     os << '\n';
   }
   os << "outputs:";
-  for (std::uint32_t r : output_registers()) os << " r" << r;
+  for (std::uint32_t r : data_->reg_outputs()) os << " r" << r;
   os << '\n';
   return os.str();
 }

@@ -1,5 +1,7 @@
 #include "genmod/kernel/tape_contractor.hpp"
 
+#include "tape_data.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -44,7 +46,7 @@ bool hides_errors(Op op) noexcept { return op == Op::Select || op == Op::IsError
 }  // namespace
 
 bool TapeContractor::projects(const Tape& tape) noexcept {
-  return std::none_of(tape.ssa().begin(), tape.ssa().end(), [](const Clause& c) { return hides_errors(c.op); });
+  return std::none_of(detail::ssa(tape).begin(), detail::ssa(tape).end(), [](const Clause& c) { return hides_errors(c.op); });
 }
 
 bool TapeContractor::contract(const Tape& tape, std::span<Interval> box, const Interval& target,
@@ -53,8 +55,8 @@ bool TapeContractor::contract(const Tape& tape, std::span<Interval> box, const I
     throw std::invalid_argument("genmod: TapeContractor: the tape has " + std::to_string(tape.num_outputs()) +
                                 " outputs, expected 1");
   // Forward: the evaluator's enclosures and error bits for every SSA value.
-  forward_.run(tape, box, tape.ssa(), tape.call_arg_values(), tape.num_values());
-  const std::uint32_t root = tape.output_values()[0];
+  forward_.run(tape, box, detail::ssa(tape), detail::call_arg_values(tape), detail::num_values(tape));
+  const std::uint32_t root = detail::output_values(tape)[0];
   if (forward_.err_[root] == kCertainError) return false;  // f is NaN everywhere on the box
   v_.assign(forward_.regs_.begin(), forward_.regs_.end());
   // Empty values that are not certain errors are NaN bounds of a possible overflow (inf - inf):
@@ -71,7 +73,7 @@ bool TapeContractor::contract(const Tape& tape, std::span<Interval> box, const I
 // value is a number at every solution (projects()), a certain error anywhere makes f one too,
 // which contract() has already rejected.
 bool TapeContractor::project(const Tape& tape, std::span<Interval> box, std::size_t narrowable) {
-  const std::span<const Clause> ssa = tape.ssa();
+  const std::span<const Clause> ssa = detail::ssa(tape);
   const std::span<const double> k = tape.constants();
   for (std::size_t i = ssa.size(); i-- > 0;) {
     const Clause& c = ssa[i];

@@ -67,9 +67,10 @@ namespace {
 constexpr std::size_t kBlock = 4096;  // points gathered per batch evaluation
 
 void count_ops(const Tape& tape, std::size_t points, LatticeStats& stats) {
-  for (const Clause& c : tape.clauses())
-    if (c.op != Op::Load && c.op != Op::Const && c.op != Op::CallOut)
-      stats.op_counts[static_cast<std::size_t>(c.op)] += points;
+  for (int i = 0; i < kNumOps; ++i) {
+    const Op op = static_cast<Op>(i);
+    if (op != Op::Load && op != Op::Const && op != Op::CallOut) stats.op_counts[static_cast<std::size_t>(i)] += tape.count(op) * points;
+  }
 }
 
 // Where one tape input of a stage comes from: values indexed by the stage's multi-index k as

@@ -5,6 +5,7 @@
 #include "genmod/kernel/gradient_evaluator.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
+#include "kernel/src/tape_data.hpp"
 #include "genmod/kernel/vm_format.hpp"
 #include "kernel/random_functions.hpp"
 
@@ -114,12 +115,12 @@ TEST(Evaluators, IntervalAtAPointContainsThePointValue) {
 // The invariants of both forms: the same operations in the same order; SSA ids unique, below
 // num_values() and defined before use; registers below num_registers().
 void expect_well_formed(const Tape& t) {
-  const auto reg = t.clauses();
-  const auto ssa = t.ssa();
+  const auto reg = detail::clauses(t);
+  const auto ssa = detail::ssa(t);
   ASSERT_EQ(reg.size(), ssa.size());
-  std::vector<bool> defined(t.num_values(), false);
+  std::vector<bool> defined(detail::num_values(t), false);
   const auto check_value = [&](std::uint32_t v) {
-    ASSERT_LT(v, t.num_values());
+    ASSERT_LT(v, detail::num_values(t));
     EXPECT_TRUE(defined[v]) << "value " << v << " used before its definition\n" << t.disassemble();
   };
   for (std::size_t i = 0; i < ssa.size(); ++i) {
@@ -133,12 +134,12 @@ void expect_well_formed(const Tape& t) {
       EXPECT_LT(reg[i].a, t.num_registers());
     }
     EXPECT_LT(reg[i].out, t.num_registers());
-    ASSERT_LT(ssa[i].out, t.num_values());
+    ASSERT_LT(ssa[i].out, detail::num_values(t));
     EXPECT_FALSE(defined[ssa[i].out]) << "value " << ssa[i].out << " defined twice";
     defined[ssa[i].out] = true;
   }
-  for (std::uint32_t v : t.output_values()) check_value(v);
-  for (std::uint32_t r : t.output_registers()) EXPECT_LT(r, t.num_registers());
+  for (std::uint32_t v : detail::output_values(t)) check_value(v);
+  for (std::uint32_t r : detail::output_registers(t)) EXPECT_LT(r, t.num_registers());
 }
 
 bool same_clause(const Clause& x, const Clause& y) {
@@ -149,11 +150,11 @@ bool same_clause(const Clause& x, const Clause& y) {
 void expect_same_tape(const Tape& x, const Tape& y) {
   ASSERT_EQ(x.size(), y.size());
   for (std::size_t i = 0; i < x.size(); ++i) {
-    EXPECT_TRUE(same_clause(x.clauses()[i], y.clauses()[i])) << i;
-    EXPECT_TRUE(same_clause(x.ssa()[i], y.ssa()[i])) << i;
+    EXPECT_TRUE(same_clause(detail::clauses(x)[i], detail::clauses(y)[i])) << i;
+    EXPECT_TRUE(same_clause(detail::ssa(x)[i], detail::ssa(y)[i])) << i;
   }
-  EXPECT_TRUE(std::ranges::equal(x.output_registers(), y.output_registers()));
-  EXPECT_TRUE(std::ranges::equal(x.output_values(), y.output_values()));
+  EXPECT_TRUE(std::ranges::equal(detail::output_registers(x), detail::output_registers(y)));
+  EXPECT_TRUE(std::ranges::equal(detail::output_values(x), detail::output_values(y)));
   EXPECT_EQ(x.num_registers(), y.num_registers());
 }
 
@@ -232,7 +233,7 @@ TEST(Evaluators, SharedSubexpressionIsEvaluatedOnce) {
   const Fn g = sin(x(0)) * cos(x(1)) + 2.0;
   const Tape t(sqrt(g) + g);
   int sines = 0;
-  for (const Clause& c : t.clauses()) sines += c.op == Op::Sin;
+  for (const Clause& c : detail::clauses(t)) sines += c.op == Op::Sin;
   EXPECT_EQ(sines, 1);
   EXPECT_EQ(t.size(), 8u);  // load, sin, load, cos, mul, add-imm, sqrt, add
 }
@@ -319,7 +320,7 @@ TEST(Evaluators, PruningKeepsTheCallsItNeeds) {
   const Fn near = apply_custom(op, {x(0)});
   const Fn far = apply_custom(op, {x(0) + 0.25});
   const Tape tape(select(x(0) < 0.5, min(near[0], near[1]), far[1] * x(1)), std::vector<int>{0, 1});
-  ASSERT_EQ(tape.calls().size(), 2u);
+  ASSERT_EQ(detail::calls(tape).size(), 2u);
   IntervalEvaluator iv;
   PointEvaluator pv;
   TapeSimplifier scratch;
@@ -332,7 +333,7 @@ TEST(Evaluators, PruningKeepsTheCallsItNeeds) {
     iv.eval(tape, box);
     const Tape pruned = tape.simplify(iv.choices(), scratch);
     expect_well_formed(pruned);
-    EXPECT_EQ(pruned.calls().size(), c.calls) << pruned.disassemble();
+    EXPECT_EQ(detail::calls(pruned).size(), c.calls) << pruned.disassemble();
     for (int s = 0; s <= 10; ++s) {
       const std::vector<double> p = {c.lo + (c.hi - c.lo) * s / 10, 0.3};
       EXPECT_TRUE(same_bits(pv.eval(tape, p)[0], pv.eval(pruned, p)[0])) << p[0];

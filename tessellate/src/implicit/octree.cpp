@@ -202,7 +202,7 @@ std::vector<Octree::Pending> Octree::classify_all(std::vector<Pending>& pending,
     c.bounded_gradient = d.bounded_gradient;
     if (d.kind == CellKind::Surface) {
       c.tapes = static_cast<std::uint32_t>(tapes_.size());
-      tape_bytes_ += d.tapes->value.clauses().size_bytes() + d.tapes->gradient.clauses().size_bytes();
+      tape_bytes_ += d.tapes->value.memory_bytes() + d.tapes->gradient.memory_bytes();
       tapes_.push_back(std::move(*d.tapes));
     }
   }

@@ -22,6 +22,8 @@
 
 namespace genmod {
 
+struct Clause;  // a tape instruction (private to the kernel)
+
 class IntervalEvaluator {
  public:
   // `box[k]` is the range of input k. Throws std::invalid_argument for a wrong dimension or

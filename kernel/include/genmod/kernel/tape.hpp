@@ -28,16 +28,12 @@
 namespace genmod {
 
 class CustomOp;
+class Tape;
+struct TapeData;  // a tape's clauses, calls and constants (kernel/src/tape_data.hpp, not installed)
 
-struct Clause {
-  Op op;
-  std::uint8_t reserved[3] = {0, 0, 0};
-  std::uint32_t out;  // destination register (SSA form: the id of the value it defines)
-  std::uint32_t a;    // first operand; Const: constant index; Load: input position; Call: call index; CallOut: slot
-  std::uint32_t b;    // second operand; immediate forms: constant index; CallOut: the Call clause's value (SSA)
-  std::uint32_t c;    // third operand (select's else branch)
-};
-static_assert(sizeof(Clause) == 20);
+namespace detail {
+const TapeData& tape_data(const Tape& tape) noexcept;  // for the kernel's evaluators
+}  // namespace detail
 
 // Which operand of a min / max / select clause is the result over a box.
 enum Choice : std::uint8_t {
@@ -45,19 +41,6 @@ enum Choice : std::uint8_t {
   kChoiceFirst = 1,  // min/max: operand a; select: the then-branch
   kChoiceSecond = 2  // min/max: operand b (or the immediate); select: the else-branch
 };
-
-// One application of a custom operator on the tape.
-struct CallSite {
-  const CustomOp* op;         // kept alive by the tape: custom_ops()[op_index]
-  std::uint32_t op_index;
-  std::uint32_t first_arg;    // arguments: call_args()[first_arg, first_arg + num_args)
-  std::uint32_t num_args;
-  std::uint32_t first_slot;   // outputs go to slots [first_slot, first_slot + num_outputs)
-  std::uint32_t num_outputs;
-};
-
-class Tape;
-struct TapeData;  // a tape's contents (tape.cpp)
 
 // Scratch memory of Tape::simplify, reused from call to call (one per thread, like an
 // evaluator). Its contents are private to the kernel; a copy starts with empty scratch.
@@ -84,28 +67,18 @@ class Tape {
   // depends on must be listed (std::invalid_argument names a missing one).
   Tape(const Fn& f, Coordinates inputs);
 
-  // Register form.
-  std::span<const Clause> clauses() const noexcept;
-  std::span<const std::uint32_t> output_registers() const noexcept;
-  std::span<const std::uint32_t> call_arg_registers() const noexcept;
-  std::uint32_t num_registers() const noexcept;
-  // SSA form (same clause order): clause i defines value ssa()[i].out, an id below
-  // num_values(); its operands are values defined earlier on the tape. Output j is value
-  // output_values()[j].
-  std::span<const Clause> ssa() const noexcept;
-  std::span<const std::uint32_t> output_values() const noexcept;
-  std::span<const std::uint32_t> call_arg_values() const noexcept;  // as call_arg_registers()
-  std::uint32_t num_values() const noexcept;
-
   std::span<const double> constants() const noexcept;
   std::span<const int> inputs() const noexcept;
   std::size_t num_inputs() const noexcept { return inputs().size(); }
-  std::size_t num_outputs() const noexcept { return output_registers().size(); }
-  std::size_t size() const noexcept { return clauses().size(); }
-  std::span<const CallSite> calls() const noexcept;
-  // The custom operators the calls apply (shared owners: the tape keeps them alive).
-  std::span<const std::shared_ptr<const CustomOp>> custom_ops() const noexcept;
-  std::uint32_t num_call_slots() const noexcept;
+  std::size_t num_outputs() const noexcept;
+  std::size_t size() const noexcept;  // number of clauses
+  std::uint32_t num_registers() const noexcept;
+  // Number of clauses with opcode `op`.
+  std::size_t count(Op op) const noexcept;
+  // Bytes of clauses, call sites and argument lists this tape holds (constants are shared
+  // with the tapes pruned from it and not counted).
+  std::size_t memory_bytes() const noexcept;
+
   // True if some clause can make a choice (min / max / select), i.e. pruning can help.
   bool has_choices() const noexcept;
 
@@ -118,9 +91,9 @@ class Tape {
   // One line per clause, for debugging and the `info` command.
   std::string disassemble() const;
 
-  using Data = TapeData;
-
  private:
+  friend const TapeData& detail::tape_data(const Tape& tape) noexcept;
+  using Data = TapeData;
   explicit Tape(std::shared_ptr<const Data> data) : data_(std::move(data)) {}
   static std::shared_ptr<const Data> compile(const Fn& f, std::span<const int> inputs);
   std::shared_ptr<const Data> data_;
