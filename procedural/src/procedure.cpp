@@ -150,10 +150,12 @@ std::shared_ptr<const PolyMesh> ProcedureRegistry::call_shared(std::string_view 
   if (e.spec.mode != Mode::Out) refuse("call", e.spec.name, "an InOut procedure needs a model (call_inout)");
   Arguments resolved = resolve(name, args);
   CallContext inner(*this, context);
-  if (!e.spec.cacheable || !caching()) return std::make_shared<const PolyMesh>(e.spec.out_body(resolved, inner));
+  // `new PolyMesh(body())` and not make_shared: PolyMesh has no move constructor, and only a
+  // prvalue initialising the object directly is not a whole-mesh copy (guaranteed elision).
+  if (!e.spec.cacheable || !caching()) return std::shared_ptr<const PolyMesh>(new PolyMesh(e.spec.out_body(resolved, inner)));
   std::string key = cache_key(e, resolved, context, nullptr);
   if (auto hit = e.cache->find(key)) return hit;
-  auto built = std::make_shared<const PolyMesh>(e.spec.out_body(resolved, inner));
+  std::shared_ptr<const PolyMesh> built(new PolyMesh(e.spec.out_body(resolved, inner)));
   e.cache->insert(key, built);
   return built;
 }
