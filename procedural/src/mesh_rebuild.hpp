@@ -8,6 +8,8 @@
 
 #include "genmod/procedural/poly_mesh.hpp"
 
+#include "face_labels.hpp"
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,6 +38,7 @@ inline PolyMesh build_mesh(const MeshParts& parts, const char* tool) {
   mesh.reserve(parts.points.size(), parts.corners.size(), n_faces);
   for (const Vec3& p : parts.points) mesh.add_vertex(p);
   std::vector<PolyMesh::VertexHandle> ring;
+  OpenMesh::FPropHandleT<std::string> labels;  // added at the first label (none: no property)
   for (std::size_t i = 0; i < n_faces; ++i) {
     ring.clear();
     for (int c = parts.face_start[i]; c < parts.face_start[i + 1]; ++c)
@@ -43,7 +46,9 @@ inline PolyMesh build_mesh(const MeshParts& parts, const char* tool) {
     PolyMesh::FaceHandle f = mesh.add_face(ring);
     if (!f.is_valid()) throw std::invalid_argument(std::string(tool) +
                                   ": the result would not be a manifold (faces of the set touch at a vertex only?)");
-    if (!parts.labels[i].empty()) set_face_label(mesh, f, parts.labels[i]);
+    if (parts.labels[i].empty()) continue;
+    if (!labels.is_valid()) labels = label_property(mesh);
+    mesh.property(labels, f) = parts.labels[i];
   }
   return mesh;
 }
