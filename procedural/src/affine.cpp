@@ -1,6 +1,5 @@
 #include "genmod/procedural/affine.hpp"
 
-#include <vector>
 
 namespace genmod {
 
@@ -35,18 +34,6 @@ Affine operator*(const Affine& a, const Affine& b) {
 
 void apply_affine(const Affine& xf, PolyMesh& mesh) {
   for (PolyMesh::VertexHandle v : mesh.vertices()) mesh.set_point(v, xf.apply(mesh.point(v)));
-}
-
-void append_mesh(PolyMesh& mesh, const PolyMesh& part, const Affine& xf) {
-  std::vector<PolyMesh::VertexHandle> map(part.n_vertices());
-  for (PolyMesh::VertexHandle v : part.vertices()) map[v.idx()] = mesh.add_vertex(xf.apply(part.point(v)));
-  std::vector<PolyMesh::VertexHandle> corners;
-  for (PolyMesh::FaceHandle f : part.faces()) {
-    corners.clear();
-    for (PolyMesh::VertexHandle v : part.fv_range(f)) corners.push_back(map[v.idx()]);
-    PolyMesh::FaceHandle g = mesh.add_face(corners);
-    set_face_label(mesh, g, face_label(part, f));
-  }
 }
 
 }  // namespace genmod

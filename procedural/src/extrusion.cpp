@@ -1,5 +1,6 @@
 #include "genmod/procedural/extrusion.hpp"
 
+#include "face_labels.hpp"
 #include "mesh_rebuild.hpp"
 #include "tool_checks.hpp"
 
@@ -26,6 +27,7 @@ FaceList extrude(PolyMesh& mesh, const FaceList& faces, const Vec3& by) {
       if (!mesh.opposite_face_handle(h).is_valid())
         kept[mesh.from_vertex_handle(h).idx()] = kept[mesh.to_vertex_handle(h).idx()] = 1;
 
+  const auto labels = detail::find_label_property(mesh);
   detail::MeshParts parts;
   std::vector<int> old_index(mesh.n_vertices(), -1), new_index(mesh.n_vertices(), -1);
   for (auto v : mesh.vertices())
@@ -45,12 +47,12 @@ FaceList extrude(PolyMesh& mesh, const FaceList& faces, const Vec3& by) {
     if (in_set[f.idx()]) continue;
     for (auto v : mesh.fv_range(f)) parts.corners.push_back(old_index[v.idx()]);
     parts.face_start.push_back(static_cast<int>(parts.corners.size()));
-    parts.labels.push_back(face_label(mesh, f));
+    parts.labels.push_back(detail::label_of(mesh, labels, f));
   }
   FaceList caps;
   caps.reserve(faces.size());
   for (PolyMesh::FaceHandle f : faces) {
-    const std::string label = face_label(mesh, f);
+    const std::string& label = detail::label_of(mesh, labels, f);
     // Halfedge a -> b of f lies on the set's boundary when the face across is outside the set.
     for (auto h : mesh.fh_range(f)) {
       const auto across = mesh.opposite_face_handle(h);

@@ -1,5 +1,7 @@
 #include "genmod/procedural/mesh_hash.hpp"
 
+#include "face_labels.hpp"
+
 #include <bit>
 #include <cstdio>
 
@@ -34,10 +36,11 @@ MeshHash content_hash(const PolyMesh& mesh) {
     for (int a = 0; a < 3; ++a) h.word(std::bit_cast<std::uint64_t>(p[a]));
   }
   h.word(mesh.n_faces());
+  const auto labels = detail::find_label_property(mesh);
   for (PolyMesh::FaceHandle f : mesh.faces()) {
     h.word(~static_cast<std::uint64_t>(f.idx()));  // face separator
     for (PolyMesh::VertexHandle v : mesh.fv_range(f)) h.word(static_cast<std::uint64_t>(v.idx()));
-    std::string label = face_label(mesh, f);
+    const std::string& label = detail::label_of(mesh, labels, f);
     h.word(label.size());
     for (unsigned char c : label) h.word(c);
   }

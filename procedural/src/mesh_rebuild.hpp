@@ -4,9 +4,21 @@
 // faces depending on insertion order (complex vertices); building a fresh mesh from a
 // manifold face list in index order is robust, deterministic and garbage-free. The price is
 // that handles of the old mesh are invalid afterwards (named sets are recomputed from labels).
+//
+// Why the rebuild also costs the whole mesh, and why it stays (issue 12): the rebuilt mesh is
+// canonical. Its edges come in order of first use by the faces, each oriented as in its first
+// face, and each vertex's outgoing half-edge is what add_face leaves; later tools read that
+// order (sqrt(2) emits faces in edge order and sums a vertex's face points in its fan order
+// from the outgoing half-edge), so every model's bytes depend on it. An in-place extrusion or
+// sqrt(2) step (delete the set's faces, append the new ones) would cost the selection but
+// leave old edges where they were and other outgoing half-edges: the same surface with other
+// bytes. Making it byte-identical needs those tools to read a canonical order that does not
+// come from the rebuild (or a faster rebuild that reproduces add_face's result exactly).
 #pragma once
 
 #include "genmod/procedural/poly_mesh.hpp"
+
+#include "face_labels.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -36,6 +48,7 @@ inline PolyMesh build_mesh(const MeshParts& parts, const char* tool) {
   mesh.reserve(parts.points.size(), parts.corners.size(), n_faces);
   for (const Vec3& p : parts.points) mesh.add_vertex(p);
   std::vector<PolyMesh::VertexHandle> ring;
+  OpenMesh::FPropHandleT<std::string> labels;  // added at the first label (none: no property)
   for (std::size_t i = 0; i < n_faces; ++i) {
     ring.clear();
     for (int c = parts.face_start[i]; c < parts.face_start[i + 1]; ++c)
@@ -43,7 +56,9 @@ inline PolyMesh build_mesh(const MeshParts& parts, const char* tool) {
     PolyMesh::FaceHandle f = mesh.add_face(ring);
     if (!f.is_valid()) throw std::invalid_argument(std::string(tool) +
                                   ": the result would not be a manifold (faces of the set touch at a vertex only?)");
-    if (!parts.labels[i].empty()) set_face_label(mesh, f, parts.labels[i]);
+    if (parts.labels[i].empty()) continue;
+    if (!labels.is_valid()) labels = label_property(mesh);
+    mesh.property(labels, f) = parts.labels[i];
   }
   return mesh;
 }

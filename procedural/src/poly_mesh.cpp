@@ -1,5 +1,7 @@
 #include "genmod/procedural/poly_mesh.hpp"
 
+#include "face_labels.hpp"
+
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -7,13 +9,8 @@
 namespace genmod {
 namespace {
 
-constexpr const char* kLabelProperty = "genmod:label";
-
-OpenMesh::FPropHandleT<std::string> label_property(PolyMesh& mesh) {
-  OpenMesh::FPropHandleT<std::string> handle;
-  if (!mesh.get_property_handle(handle, kLabelProperty)) mesh.add_property(handle, kLabelProperty);
-  return handle;
-}
+using detail::kLabelProperty;
+using detail::label_property;
 
 }  // namespace
 

@@ -140,14 +140,24 @@ std::string ProcedureRegistry::cache_key(const Entry& e, const Arguments& args, 
 PolyMesh ProcedureRegistry::call(std::string_view name, const NamedArgs& args, const Context& context) const {
   const Entry& e = entry(name);
   if (e.spec.mode != Mode::Out) refuse("call", e.spec.name, "an InOut procedure needs a model (call_inout)");
+  if (!e.spec.cacheable || !caching()) return e.spec.out_body(resolve(name, args), CallContext(*this, context));
+  return *call_shared(name, args, context);  // a deep copy (OpenMesh copies properties)
+}
+
+std::shared_ptr<const PolyMesh> ProcedureRegistry::call_shared(std::string_view name, const NamedArgs& args,
+                                                               const Context& context) const {
+  const Entry& e = entry(name);
+  if (e.spec.mode != Mode::Out) refuse("call", e.spec.name, "an InOut procedure needs a model (call_inout)");
   Arguments resolved = resolve(name, args);
   CallContext inner(*this, context);
-  if (!e.spec.cacheable || !caching()) return e.spec.out_body(resolved, inner);
+  // `new PolyMesh(body())` and not make_shared: PolyMesh has no move constructor, and only a
+  // prvalue initialising the object directly is not a whole-mesh copy (guaranteed elision).
+  if (!e.spec.cacheable || !caching()) return std::shared_ptr<const PolyMesh>(new PolyMesh(e.spec.out_body(resolved, inner)));
   std::string key = cache_key(e, resolved, context, nullptr);
-  if (auto hit = e.cache->find(key)) return *hit;  // a deep copy (OpenMesh copies properties)
-  auto built = std::make_shared<const PolyMesh>(e.spec.out_body(resolved, inner));
+  if (auto hit = e.cache->find(key)) return hit;
+  std::shared_ptr<const PolyMesh> built(new PolyMesh(e.spec.out_body(resolved, inner)));
   e.cache->insert(key, built);
-  return *built;
+  return built;
 }
 
 void ProcedureRegistry::call_inout(std::string_view name, PolyMesh& model, const NamedArgs& args,
@@ -189,6 +199,11 @@ Context overridden(Context c, const CallOptions& o) {
 
 PolyMesh CallContext::call(std::string_view name, const NamedArgs& args, const CallOptions& options) const {
   return registry_->call(name, args, overridden(context_, options));
+}
+
+std::shared_ptr<const PolyMesh> CallContext::call_shared(std::string_view name, const NamedArgs& args,
+                                                         const CallOptions& options) const {
+  return registry_->call_shared(name, args, overridden(context_, options));
 }
 
 void CallContext::call_inout(std::string_view name, PolyMesh& model, const NamedArgs& args,

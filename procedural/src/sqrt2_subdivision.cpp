@@ -1,5 +1,6 @@
 #include "genmod/procedural/sqrt2_subdivision.hpp"
 
+#include "face_labels.hpp"
 #include "mesh_rebuild.hpp"
 #include "tool_checks.hpp"
 
@@ -16,6 +17,7 @@ namespace {
 int sqrt2_level(PolyMesh& mesh, const std::vector<char>& separable, double s) {
   // Vertex indices of the rebuilt mesh: live vertices in index order (a mesh with garbage is
   // compacted), then one face point per separable face in face order.
+  const auto labels = detail::find_label_property(mesh);
   detail::MeshParts parts;
   std::vector<int> vertex_index(mesh.n_vertices(), -1);
   for (auto v : mesh.vertices()) {
@@ -58,7 +60,7 @@ int sqrt2_level(PolyMesh& mesh, const std::vector<char>& separable, double s) {
     if (separable[f.idx()]) continue;
     for (auto v : mesh.fv_range(f)) parts.corners.push_back(vertex_index[v.idx()]);
     parts.face_start.push_back(static_cast<int>(parts.corners.size()));
-    parts.labels.push_back(face_label(mesh, f));
+    parts.labels.push_back(detail::label_of(mesh, labels, f));
     ++kept;
   }
   auto in_set = [&](PolyMesh::FaceHandle f) { return f.is_valid() && separable[f.idx()]; };
@@ -70,7 +72,7 @@ int sqrt2_level(PolyMesh& mesh, const std::vector<char>& separable, double s) {
     const auto G = mesh.opposite_face_handle(h);
     const int a = vertex_index[mesh.from_vertex_handle(h).idx()];
     const int b = vertex_index[mesh.to_vertex_handle(h).idx()];
-    const std::string label = face_label(mesh, F);
+    const std::string& label = detail::label_of(mesh, labels, F);
     if (in_set(G))
       parts.add_face({a, face_point[G.idx()], b, face_point[F.idx()]}, label);
     else

@@ -74,15 +74,17 @@ FaceList Workpiece::extrude_chain(FaceList faces, const Vec3& by, int times) {
   return faces;
 }
 
-void attach_leg(Workpiece& w, const PolyMesh& leg, const FaceList& cell, double gap) {
-  const auto [lo, hi] = bounds(w.mesh, cell);
+void attach_leg(Workpiece& w, const PolyMesh& leg, const FaceList& cell, double gap) { attach_leg(w.mesh, leg, cell, gap); }
+
+void attach_leg(PolyMesh& mesh, const PolyMesh& leg, const FaceList& cell, double gap) {
+  const auto [lo, hi] = bounds(mesh, cell);
   // append_mesh adds the leg's faces in order after the mesh's, so its top keeps its index
   // offset by the faces already there (no search of the whole mesh per leg).
-  const int first_face = static_cast<int>(w.mesh.n_faces());
+  const int first_face = static_cast<int>(mesh.n_faces());
   FaceList top;
   for (PolyMesh::FaceHandle f : faces_labelled(leg, "legtop")) top.emplace_back(first_face + f.idx());
-  append_mesh(w.mesh, leg, Affine::translation(Vec3(0.5 * (lo[0] + hi[0]), lo[1] - gap, 0.5 * (lo[2] + hi[2]))));
-  bridge(w.mesh, top, cell, "ankle");
+  append_mesh(mesh, leg, Affine::translation(Vec3(0.5 * (lo[0] + hi[0]), lo[1] - gap, 0.5 * (lo[2] + hi[2]))));
+  bridge(mesh, top, cell, "ankle");
 }
 
 FaceList merged(std::initializer_list<FaceList> lists) {

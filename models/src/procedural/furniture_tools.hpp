@@ -55,6 +55,8 @@ struct Workpiece {
 // top `gap` below, and bridges the top to the cell (the new triangles labelled "ankle"). The
 // mesh is not garbage-collected: handles of other faces stay valid.
 void attach_leg(Workpiece& w, const PolyMesh& leg, const FaceList& cell, double gap);
+// The same on a bare mesh.
+void attach_leg(PolyMesh& mesh, const PolyMesh& leg, const FaceList& cell, double gap);
 
 // The union of face lists, in index order without repeats (selections that may overlap).
 FaceList merged(std::initializer_list<FaceList> lists);

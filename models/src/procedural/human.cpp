@@ -19,6 +19,7 @@
 #include "procedural_model_defs.hpp"
 
 #include <cmath>
+#include <memory>
 
 namespace genmod::models::detail {
 namespace {
@@ -56,7 +57,7 @@ PolyMesh build_human(const Arguments& a, const CallContext& context) {
   // Legs: left and right differ in their side (the foot's big toe inside), so two builds.
   for (const char* side : {"right", "left"}) {
     const FaceList& hip = std::string(side) == "right" ? hip_r : hip_l;
-    const PolyMesh leg = context.call("leg", {{"height", leg_h},
+    const std::shared_ptr<const PolyMesh> leg_part = context.call_shared("leg", {{"height", leg_h},
                                              {"width", 0.7 * H},
                                              {"depth", 0.78 * H},
                                              {"segments", 4},
@@ -64,12 +65,14 @@ PolyMesh build_human(const Arguments& a, const CallContext& context) {
                                              {"footHeight", 0.25 * H},
                                              {"side", side},
                                              {"subdivisions", levels}});
+    const PolyMesh& leg = *leg_part;  // shared: a hit is not copied
     const auto c = centre(hip);
     attach_part(w, leg, "legtop", hip, Affine::translation(Vec3(c[2][0], c[0][1] - hip_gap, c[2][2])),
                 std::string("hip_") + side[0]);
   }
   // Arms, held out along +x (left) and -x (right: the left arm's half turn about y).
-  const PolyMesh arm = context.call("arm", {{"length", 3.0 * H}, {"thickness", (9.0 / 23.0) * H}, {"subdivisions", levels}});
+  const std::shared_ptr<const PolyMesh> arm_part = context.call_shared("arm", {{"length", 3.0 * H}, {"thickness", (9.0 / 23.0) * H}, {"subdivisions", levels}});
+  const PolyMesh& arm = *arm_part;  // shared: a hit is not copied
   {
     const auto c = centre(shoulder_l);
     attach_part(w, arm, "armroot", shoulder_l, Affine::translation(Vec3(c[1][0] + shoulder_gap, c[2][1], c[2][2])),
@@ -83,7 +86,8 @@ PolyMesh build_human(const Arguments& a, const CallContext& context) {
   }
   // Neck and head.
   {
-    const PolyMesh head = context.call("head", {{"head", H}, {"subdivisions", levels}});
+    const std::shared_ptr<const PolyMesh> head_part = context.call_shared("head", {{"head", H}, {"subdivisions", levels}});
+    const PolyMesh& head = *head_part;  // shared: a hit is not copied
     const auto c = centre(neck);
     attach_part(w, head, "headroot", neck, Affine::translation(Vec3(c[2][0], c[1][1] + neck_gap, c[2][2])), "neck");
   }

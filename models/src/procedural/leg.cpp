@@ -62,7 +62,8 @@ PolyMesh build_leg(const Arguments& a, const CallContext& context) {
   // The foot: its heel cell (as deep as the ankle, 0.4 depth) under the ankle, toe tips at
   // z = depth / 2 + footLength.
   const double heel = 0.4 * dp, length = 0.5 * dp + foot_length + 0.5 * heel;
-  const PolyMesh foot = context.call("foot", {{"length", length},
+  // Shared: a hit is not copied (the foot is only read, then appended).
+  const std::shared_ptr<const PolyMesh> foot_part = context.call_shared("foot", {{"length", length},
                                               {"width", 0.8 * wd},
                                               {"height", foot_height},
                                               {"numToes", toes},
@@ -70,6 +71,7 @@ PolyMesh build_leg(const Arguments& a, const CallContext& context) {
                                               {"side", side},
                                               {"subdivisions", std::min(levels, 3)},
                                               {"smoothing", smoothing}});
+  const PolyMesh& foot = *foot_part;
   // Centre the foot's top under the ankle across x.
   const auto [tlo, thi] = bounds(foot, faces_labelled(foot, "foottop"));
   const Affine place = Affine::translation(Vec3(-0.5 * (tlo[0] + thi[0]), -(h - foot_height), dp / 2 + foot_length - length));

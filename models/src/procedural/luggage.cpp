@@ -35,20 +35,15 @@ namespace {
 
 constexpr int kBodyCells = 6;
 
-PolyMesh build_luggage(const Arguments& a, const CallContext& context) {
-  const double height = positive_real(a, "luggage", "height");
-  const double width = positive_real(a, "luggage", "width");
-  const double length = positive_real(a, "luggage", "length");
-  const int num_legs = integer_in(a, "luggage", "numLegs", 0, 1024);
-  int columns = integer_in(a, "luggage", "legColumns", 0, 1024);
-  const double lid_height = real_in(a, "luggage", "lidHeight", 0.0, 64.0 * height);
-  const int leg_levels = integer_in(a, "luggage", "legSubdivisions", 0, 6);
-  if (columns == 0)
-    columns = num_legs < 2 ? 1 : std::max(2, static_cast<int>(std::lround(std::sqrt(num_legs * width / length))));
-  if (num_legs > 0 && columns > num_legs)
-    refuse_parameter("luggage", "legColumns", "must be at most numLegs (" + std::to_string(num_legs) + "), got " +
-                                                  std::to_string(columns));
-  const int rows = num_legs == 0 ? 0 : (num_legs + columns - 1) / columns;
+// The chest alone (the `luggage_chest` procedure): its mesh depends only on these arguments, so
+// it is cached (one build per chest size and leg grid) and the luggage copies it.
+PolyMesh build_chest(const Arguments& a, const CallContext&) {
+  const double height = positive_real(a, "luggage_chest", "height");
+  const double width = positive_real(a, "luggage_chest", "width");
+  const double length = positive_real(a, "luggage_chest", "length");
+  const double lid_height = real_in(a, "luggage_chest", "lidHeight", 0.0, 64.0 * height);
+  const int columns = integer_in(a, "luggage_chest", "legColumns", 1, 1024);
+  const int rows = integer_in(a, "luggage_chest", "legRows", 0, 1024);
   const int lx = 2 * columns + 1, nz = 2 * rows + 1, nx = 2 * lx;  // layout cells across x, cells along z, x
   const double cx = width / nx, cz = length / nz, cy = 0.4 * height / kBodyCells;
 
@@ -68,21 +63,53 @@ PolyMesh build_luggage(const Arguments& a, const CallContext& context) {
                             Vec3(hi[0], hi[1], 0)});
     shape_to_curve(w.mesh, top, arch, Vec3(0, 1, 0), Vec3(0, 0, 1));
   }
-  // The base cells of the legs, chosen before any bridge deletes faces.
+  // The base, where the legs go: its faces are labelled "base".
   w.name("base", w.select("luggage", ratio_box(kAll, kLow, kAll)));
+  return std::move(w.mesh);
+}
+
+PolyMesh build_luggage(const Arguments& a, const CallContext& context) {
+  const double height = positive_real(a, "luggage", "height");
+  const double width = positive_real(a, "luggage", "width");
+  const double length = positive_real(a, "luggage", "length");
+  const int num_legs = integer_in(a, "luggage", "numLegs", 0, 1024);
+  int columns = integer_in(a, "luggage", "legColumns", 0, 1024);
+  const double lid_height = real_in(a, "luggage", "lidHeight", 0.0, 64.0 * height);
+  const int leg_levels = integer_in(a, "luggage", "legSubdivisions", 0, 6);
+  if (columns == 0)
+    columns = num_legs < 2 ? 1 : std::max(2, static_cast<int>(std::lround(std::sqrt(num_legs * width / length))));
+  if (num_legs > 0 && columns > num_legs)
+    refuse_parameter("luggage", "legColumns", "must be at most numLegs (" + std::to_string(num_legs) + "), got " +
+                                                  std::to_string(columns));
+  const int rows = num_legs == 0 ? 0 : (num_legs + columns - 1) / columns;
+  const int lx = 2 * columns + 1, nz = 2 * rows + 1, nx = 2 * lx;
+  const double cx = width / nx, cz = length / nz;
+
+  // The chest draws no random numbers: seed 0 for every luggage, so luggages of any seed share
+  // the cached chest (as the tree's branches do).
+  CallOptions fixed;
+  fixed.seed = 0;
+  // Built in place and returned by name (PolyMesh has no move constructor: a std::move of a
+  // member would copy the whole mesh).
+  PolyMesh mesh = context.call("luggage_chest",
+                               {{"height", height}, {"width", width}, {"length", length}, {"lidHeight", lid_height},
+                                {"legColumns", columns}, {"legRows", rows}},
+                               fixed);
+  // The base cells of the legs, chosen before any bridge deletes faces.
+  const FaceList base = faces_labelled(mesh, "base");
   std::vector<FaceList> cells;
   for (int i = 0; i < num_legs; ++i) {
     const int r = i / columns, c = i % columns;
-    cells.push_back(w.select("base", ratio_box(cell_range(4 * c + 2, 4 * c + 3, nx), kAll,
-                                               cell_range(2 * r + 1, 2 * r + 1, nz))));
+    cells.push_back(select_faces(mesh, base, ratio_box(cell_range(4 * c + 2, 4 * c + 3, nx), kAll,
+                                                        cell_range(2 * r + 1, 2 * r + 1, nz))));
   }
   // The legs: one procedure call each, identical arguments, the caller's seed.
   const double gap = 0.25 * std::min(2 * cx, cz);
   const NamedArgs leg_args{{"height", 0.35 * height - gap}, {"width", 1.2 * cx},     {"depth", 0.6 * cz},
                            {"footLength", 0.7 * cz},     {"subdivisions", leg_levels}};
-  for (int i = 0; i < num_legs; ++i) attach_leg(w, context.call("leg", leg_args), cells[i], gap);
-  w.mesh.garbage_collection();
-  return std::move(w.mesh);
+  for (int i = 0; i < num_legs; ++i) attach_leg(mesh, *context.call_shared("leg", leg_args), cells[i], gap);
+  mesh.garbage_collection();
+  return mesh;
 }
 
 }  // namespace
@@ -91,6 +118,10 @@ ProceduralModelDef luggage_definition() {
   ProcedureSpec spec;
   spec.name = "luggage";
   spec.mode = Mode::Out;
+  // Its mesh depends only on its arguments and the seed its legs inherit (the key; it uses
+  // neither the level of detail nor the transform), so a repeated luggage is one hit, as a
+  // repeated tree is (claim 12: "called again: 0 new misses").
+  spec.cacheable = true;
   spec.params = {param("height", 2.0),   param("width", 1.0),      param("length", 2.0),
                  param("numLegs", 4),    param("legColumns", 0),   param("lidHeight", 0.4),
                  param("legSubdivisions", 3)};
@@ -105,6 +136,27 @@ ProceduralModelDef luggage_definition() {
        {"legColumns", "legs per row across x (0: about square layout cells, at least 2)"},
        {"lidHeight", "how far the lid's arch rises above the chest"},
        {"legSubdivisions", "sqrt(2) levels of each leg (passed to `leg`), 0-6"}}};
+  return {std::move(spec), std::move(info)};
+}
+
+ProceduralModelDef luggage_chest_definition() {
+  ProcedureSpec spec;
+  spec.name = "luggage_chest";
+  spec.mode = Mode::Out;
+  spec.cacheable = true;  // no random numbers: the arguments alone decide the mesh
+  spec.params = {param("height", 2.0),    param("width", 1.0),   param("length", 2.0),
+                 param("lidHeight", 0.4), param("legColumns", 2), param("legRows", 2)};
+  spec.out_body = build_chest;
+  ProceduralModel info{
+      "luggage_chest",
+      "the Luggage's chest without legs, cacheable: the body grown by extrusions, the arched lid, the base "
+      "(faces labelled 'base') laid out for legColumns x legRows legs",
+      {{"height", "the body is 0.4 height high"},
+       {"width", "chest width along x"},
+       {"length", "chest length along z"},
+       {"lidHeight", "how far the lid's arch rises above the chest"},
+       {"legColumns", "leg columns the base is laid out for, 1-1024 (4 legColumns + 2 cells across x)"},
+       {"legRows", "leg rows the base is laid out for, 0-1024 (2 legRows + 1 cells along z)"}}};
   return {std::move(spec), std::move(info)};
 }
 

@@ -16,6 +16,7 @@ ProceduralModelDef chair_definition();
 ProceduralModelDef couch_definition();
 ProceduralModelDef table_definition();
 ProceduralModelDef luggage_definition();
+ProceduralModelDef luggage_chest_definition();
 ProceduralModelDef foot_definition();
 ProceduralModelDef arm_definition();
 ProceduralModelDef torso_definition();

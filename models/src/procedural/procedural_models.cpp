@@ -17,6 +17,7 @@ std::vector<detail::ProceduralModelDef> definitions() {
   defs.push_back(detail::couch_definition());
   defs.push_back(detail::table_definition());
   defs.push_back(detail::luggage_definition());
+  defs.push_back(detail::luggage_chest_definition());
   defs.push_back(detail::foot_definition());
   defs.push_back(detail::arm_definition());
   defs.push_back(detail::torso_definition());

@@ -152,7 +152,7 @@ PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
     const double gap = 0.25 * std::min(lu, du);
     const NamedArgs leg_args{{"height", s.leg_length - gap}, {"width", 0.6 * lu}, {"depth", 0.6 * du},
                              {"footLength", 0.7 * du}};
-    for (const FaceList& cell : foot_cells) attach_leg(w, context.call("leg", leg_args), cell, gap);
+    for (const FaceList& cell : foot_cells) attach_leg(w, *context.call_shared("leg", leg_args), cell, gap);
   }
   w.mesh.garbage_collection();
   return std::move(w.mesh);

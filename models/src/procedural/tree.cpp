@@ -114,9 +114,9 @@ PolyMesh build_tree(const Arguments& a, const CallContext& context) {
         // the cached branches.
         CallOptions fixed;
         fixed.seed = 0;
-        const PolyMesh b =
-            context.call("branch", {{"length", len}, {"radius", r}, {"taper", radius_ratio}, {"sides", sides}}, fixed);
-        append_mesh(tree, b, t.frame);
+        const std::shared_ptr<const PolyMesh> b =
+            context.call_shared("branch", {{"length", len}, {"radius", r}, {"taper", radius_ratio}, {"sides", sides}}, fixed);
+        append_mesh(tree, *b, t.frame);
         t.frame = t.frame * Affine::translation(Vec3(0, len, 0));
         ++t.order;
         break;

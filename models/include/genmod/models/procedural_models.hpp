@@ -16,9 +16,13 @@
 //            cushions.
 //   table    Algorithm 8: a box top grown by extrusions, or an oval top (a flat box
 //            subdivided with the smoothing factor), on four legs.
-//   luggage  Algorithm 7: a chest grown by extrusions with an arched lid (curve shaping), on
-//            numLegs legs, each a call of `leg` with the same arguments and the inherited seed,
-//            so with caching on the leg costs one miss and numLegs - 1 hits (claim 12).
+//   luggage  Algorithm 7, cacheable: a chest grown by extrusions with an arched lid (curve
+//            shaping), on numLegs legs, each a call of `leg` with the same arguments and the
+//            inherited seed, so with caching on the leg costs one miss and numLegs - 1 hits
+//            (claim 12), and a repeated luggage is one luggage hit (no sub-call). The chest is
+//            a call of `luggage_chest` (seed 0), appended to by shared (uncopied) leg hits.
+//   luggage_chest  the luggage without legs, cacheable: the body, the arched lid and the base
+//            (labelled "base") laid out for legColumns x legRows legs.
 //   foot     Algorithm 4, cacheable: a grid of toe and gap columns, the toes extruded forward
 //            (the big toe the longest), mirrored for the right foot; flat top "foottop".
 //   arm      an arm held out along +x (upper arm, elbow, forearm, wrist, flat hand) on a flat
@@ -70,7 +74,8 @@ struct ProceduralModel {
   std::vector<std::pair<std::string, std::string>> parameter_docs;
 };
 
-// leg, chair, couch, table, luggage, foot, arm, torso, head, human, branch, tree, in that order.
+// leg, chair, couch, table, luggage, luggage_chest, foot, arm, torso, head, human, branch, tree, in
+// that order.
 const std::vector<ProceduralModel>& procedural_gallery();
 // nullptr when no procedural model has that name.
 const ProceduralModel* find_procedural_model(const std::string& name);

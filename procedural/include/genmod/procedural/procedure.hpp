@@ -87,6 +87,10 @@ class CallContext {
   int lod() const { return context_.lod; }
   const Affine& transform() const { return context_.transform; }
   PolyMesh call(std::string_view name, const NamedArgs& args = {}, const CallOptions& options = {}) const;
+  // The same call for a part the body only reads (appends, measures): see
+  // ProcedureRegistry::call_shared.
+  std::shared_ptr<const PolyMesh> call_shared(std::string_view name, const NamedArgs& args = {},
+                                              const CallOptions& options = {}) const;
   void call_inout(std::string_view name, PolyMesh& model, const NamedArgs& args = {},
                   const CallOptions& options = {}) const;
 
@@ -137,6 +141,13 @@ class ProcedureRegistry {
 
   // Top-level calls; bodies call through their CallContext instead.
   PolyMesh call(std::string_view name, const NamedArgs& args = {}, const Context& context = {}) const;
+  // The same call (same result bytes, same hit and miss counts), but the mesh is shared and
+  // read-only: a cache hit hands out the stored mesh itself instead of a deep copy. The copy of
+  // a hit is what Experiment 6's warm calls cost (§4.6: "dominated by deep-copying"), and an
+  // assembling body (the luggage appending 30 legs) copies the part again anyway. Hits stay
+  // independent (claim 10) because nobody can change a const mesh; use call() for a mesh to edit.
+  std::shared_ptr<const PolyMesh> call_shared(std::string_view name, const NamedArgs& args = {},
+                                              const Context& context = {}) const;
   void call_inout(std::string_view name, PolyMesh& model, const NamedArgs& args = {},
                   const Context& context = {}) const;
 
