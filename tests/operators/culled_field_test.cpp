@@ -93,13 +93,17 @@ TEST(CulledFieldGradientBound, HoldsAtSampledPointsAndIsNearlyReached) {
       const double bound = culled_derivative_bound(el, cube(p, 0.0));
       if (exact < 1.5 * el.radius * (1 + 1e-9)) continue;
       ASSERT_TRUE(std::isfinite(bound)) << "no bound at distance " << exact / el.radius << " radii";
+      // The derivation bounds the gradient's length, hence each partial derivative.
+      double length2 = 0;
       for (int k = 0; k < 3; ++k) {
         const double g = std::abs(at(grad[k], p[0], p[1], p[2]));
         ASSERT_LE(g, bound) << "element " << e << " (r1 " << r1 << ", r2 " << r2 << ", length " << length << ") at "
                             << exact / el.radius << " radii, d/dx" << k;
         worst_ratio = std::max(worst_ratio, g / bound);
+        length2 += g * g;
         ++checked;
       }
+      ASSERT_LE(std::sqrt(length2), bound) << "element " << e << " at " << exact / el.radius << " radii: gradient length";
     }
   }
   EXPECT_GT(checked, 20000);
