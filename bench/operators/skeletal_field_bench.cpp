@@ -2,16 +2,20 @@
 // with them, timed for the plain sum, the culled field with a linear scan of the elements and
 // the culled field with its hierarchy, in one run (compare the *_median rows: CPU time).
 //
-//  * BM_FieldOctree/<mode>/<n>: the interval classification of f = 1/2 - D over an octree of
-//    [-2.2, 2.2]^3 down to depth 6 (cells of 0.069, about two radii): a box whose bound
-//    excludes 0 is a leaf, the others are split. Modes: 0 the plain sum of the n densities as
-//    one tape, 1 the culled field with culling disabled (cull_below = 0: the same sum as one
-//    custom operator), 2 the culled field with a linear scan of the elements, 3 with the
-//    hierarchy. Counters: boxes visited, boxes left ambiguous at the deepest level.
-//  * BM_GradientOctree/<mode>/<n>: the same octree, and at each box that may hold surface the
+//  * BM_FieldOctree/<mode>/<n>/<depth>/<side>: the interval classification of f = 1/2 - D
+//    over an octree of the cube of side <side>/1000 centred at the origin down to <depth> (a
+//    box whose bound excludes 0 is a leaf, the others are split). Modes: 0 the plain sum of the
+//    n densities as one tape, 1 the culled field with culling disabled (cull_below = 0: the
+//    same sum as one custom operator), 2 the culled field with a linear scan of the elements,
+//    3 with the hierarchy. Counters: boxes visited, boxes left ambiguous at the deepest level.
+//    Registered: the cube 0.55 to depth 3 (cells 0.069, about two radii) in every mode, and
+//    the whole field (cube 4.4, depth 6) for the linear scan and the hierarchy (the sums would
+//    take about 100 times longer).
+//  * BM_GradientOctree/<mode>/...: the same octree, and at each box that may hold surface the
 //    gradient's inclusion as well (the mesher's normal-cone test): modes 1-3.
-//  * BM_MeshField/<mode>/<n>: mesh_implicit of the field in a cube of side 0.64 around the
-//    skeleton's first node at cell size 0.02 (modes 1 and 3).
+//  * BM_MeshField/<mode>/<n>: mesh_implicit of the field in the cube of side 0.16 at the origin
+//    at cell size 0.02, one thread (modes 1 and 3; 1,000 elements: the mesher's exact point
+//    evaluations pay every Gaussian element, so 10,000 would take minutes per run).
 //
 // The skeleton: a random walk of n segments of length 0.05 with direction persistence in
 // [-2, 2]^3, branching from a random earlier node one time in ten; radius 0.02 .. 0.04.
