@@ -3,8 +3,7 @@
 // A culled field is the sum of element densities D_e(p) >= 0, as one custom operator of the
 // point p. Its point value is the full sum. Its inclusion over a box X skips each element
 // whose skeleton is far from X and adds a sound remainder in its place: with delta a lower
-// bound of dist(X, skeleton_e) (from the skeleton's bounding box, in outward-rounded
-// arithmetic),
+// bound of dist(X, skeleton_e) (from the skeleton's bounding box, with a rounding margin),
 //  * Falloff::gaussian: D_e <= weight * Gauss(delta / radius) (valid for Gaussian point
 //    sources of radius `radius` and for Gaussian segment convolutions with radius = the larger
 //    endpoint radius, spec §10.2), so a culled element contributes [0, that bound];
