@@ -67,7 +67,7 @@ std::vector<FieldElement> convolution_elements(const std::vector<ConvolutionSegm
   for (const ConvolutionSegment& s : segments) {
     const double r = std::max(s.r1, s.r2);
     if (kernel == Kernel::gaussian)
-      es.push_back({convolve(s, kernel), s.a, s.b, 1.0, r, Falloff::gaussian});
+      es.push_back(gaussian_segment_element(s.a, s.b, s.r1, s.r2));
     else
       es.push_back({convolve(s, kernel), s.a, s.b, 1.0, std::sqrt(2.0) * kernel_support(kernel) * r, Falloff::compact});
   }

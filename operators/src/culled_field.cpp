@@ -1,6 +1,8 @@
-// Superposition with per-box culling (culled_field.hpp).
+// Superposition with per-box culling through a hierarchy of the elements (culled_field.hpp).
 #include "genmod/operators/culled_field.hpp"
 
+#include "culled_field_bounds.hpp"
+#include "culled_field_bvh.hpp"
 #include "genmod/kernel/custom_op.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
@@ -8,10 +10,10 @@
 #include "genmod/operators/convolution.hpp"
 
 #include <algorithm>
-#include <cstdint>
-#include <cmath>
-#include <limits>
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -20,140 +22,72 @@
 namespace genmod {
 namespace {
 
+using detail::box_distance2_below;
+
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const int kXyz[3] = {0, 1, 2};
 
-// A lower bound of the squared distance between the box and the skeleton's bounding box.
-double box_distance2_below(const FieldElement& e, std::span<const Interval> box) {
-  Interval sum(0.0);
-  for (int i = 0; i < 3; ++i) {
-    const double s_lo = std::min(e.a[i], e.b[i]), s_hi = std::max(e.a[i], e.b[i]);
-    Interval gap(0.0);
-    if (box[i].lo() > s_hi) gap = Interval(box[i].lo()) - Interval(s_hi);
-    else if (box[i].hi() < s_lo) gap = Interval(s_lo) - Interval(box[i].hi());
-    sum = sum + square(Interval(std::max(gap.lo(), 0.0), std::max(gap.hi(), 0.0)));
-  }
-  return std::max(sum.lo(), 0.0);
-}
-
-// The same lower bound in plain double arithmetic, for the hot loop: each subtraction, square
-// and sum is rounded with relative error <= 2^-52 in any rounding mode (the subtraction of two
-// doubles is exact or correctly rounded), so the result shrunk by 1e-12 is below the exact one.
-double fast_box_distance2_below(const Point3& s_lo, const Point3& s_hi, std::span<const Interval> box) {
-  double sum = 0;
-  for (int i = 0; i < 3; ++i) {
-    double gap = 0;
-    if (box[i].lo() > s_hi[i]) gap = box[i].lo() - s_hi[i];
-    else if (box[i].hi() < s_lo[i]) gap = s_lo[i] - box[i].hi();
-    sum += gap * gap;
-  }
-  return sum * (1 - 1e-12);
-}
-
-// A uniform grid over the elements' reach (skeleton bounding box grown by the cull distance):
-// each cell lists the elements whose reach overlaps it. An element whose reach shares no cell
-// with a box does not overlap it, so the box is beyond its cull distance. Elements with an
-// infinite reach (never culled) are listed apart.
-class ElementGrid {
- public:
-  void build(const std::vector<Point3>& lo, const std::vector<Point3>& hi, const std::vector<double>& reach) {
-    const std::size_t n = lo.size();
-    Point3 glo = {kInf, kInf, kInf}, ghi = {-kInf, -kInf, -kInf};
-    double extent = 0;
-    std::size_t finite = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!std::isfinite(reach[k])) {
-        always_.push_back(static_cast<std::uint32_t>(k));
-        continue;
-      }
-      ++finite;
-      for (int i = 0; i < 3; ++i) {
-        glo[i] = std::min(glo[i], lo[k][i] - reach[k]);
-        ghi[i] = std::max(ghi[i], hi[k][i] + reach[k]);
-        extent = std::max(extent, hi[k][i] - lo[k][i] + 2 * reach[k]);
-      }
-    }
-    if (finite == 0) return;
-    origin_ = glo;
-    // Cells about the size of the largest reach, at most 64 per axis.
-    for (int i = 0; i < 3; ++i) {
-      const double span = std::max(ghi[i] - glo[i], 1e-300);
-      dims_[i] = std::clamp(static_cast<int>(span / std::max(extent, 1e-300)), 1, 64);
-      inv_cell_[i] = dims_[i] / span;
-    }
-    cells_.assign(static_cast<std::size_t>(dims_[0]) * dims_[1] * dims_[2], {});
-    for (std::size_t k = 0; k < n; ++k) {
-      if (!std::isfinite(reach[k])) continue;
-      int c0[3], c1[3];
-      for (int i = 0; i < 3; ++i) c0[i] = cell(i, lo[k][i] - reach[k]), c1[i] = cell(i, hi[k][i] + reach[k]);
-      for (int z = c0[2]; z <= c1[2]; ++z)
-        for (int y = c0[1]; y <= c1[1]; ++y)
-          for (int x = c0[0]; x <= c1[0]; ++x) cells_[index(x, y, z)].push_back(static_cast<std::uint32_t>(k));
-    }
-  }
-
-  // The elements that may reach the box (sorted, no repeats), into `out`.
-  void candidates(std::span<const Interval> box, std::vector<std::uint32_t>& out) const {
-    out.assign(always_.begin(), always_.end());
-    if (cells_.empty()) return;
-    int c0[3], c1[3];
-    for (int i = 0; i < 3; ++i) {
-      c0[i] = cell(i, box[i].lo());
-      c1[i] = cell(i, box[i].hi());
-      // a box wholly outside the grid on one side reaches nothing in it
-      if (box[i].hi() < origin_[i] || (box[i].lo() - origin_[i]) * inv_cell_[i] >= dims_[i]) return;
-    }
-    for (int z = c0[2]; z <= c1[2]; ++z)
-      for (int y = c0[1]; y <= c1[1]; ++y)
-        for (int x = c0[0]; x <= c1[0]; ++x) {
-          const auto& list = cells_[index(x, y, z)];
-          out.insert(out.end(), list.begin(), list.end());
-        }
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
-  }
-
- private:
-  int cell(int i, double v) const {
-    const double c = std::floor((v - origin_[i]) * inv_cell_[i]);
-    return static_cast<int>(std::clamp(c, 0.0, static_cast<double>(dims_[i] - 1)));
-  }
-  std::size_t index(int x, int y, int z) const {
-    return (static_cast<std::size_t>(z) * dims_[1] + static_cast<std::size_t>(y)) * dims_[0] + static_cast<std::size_t>(x);
-  }
-  Point3 origin_ = {0, 0, 0};
-  double inv_cell_[3] = {1, 1, 1};
-  int dims_[3] = {1, 1, 1};
-  std::vector<std::vector<std::uint32_t>> cells_;
-  std::vector<std::uint32_t> always_;
+// How an element of a field of the given derivative order is culled.
+enum class Cull {
+  value,     // a Gaussian density: [0, weight Gauss(delta / radius)]
+  gradient,  // a first derivative of a Gaussian convolution: [-B, B] (culled_field_bounds)
+  compact,   // zero beyond its support: [0, 0]
+  never,
 };
+
+Cull cull_kind(const FieldElement& e, int order) {
+  if (e.falloff == Falloff::compact) return Cull::compact;
+  if (e.falloff == Falloff::none) return Cull::never;
+  if (order == 0) return Cull::value;
+  if (order == 1 && e.taper >= 0) return Cull::gradient;
+  return Cull::never;
+}
+
+// The squared distance beyond which the element is culled (its bound is at most cull_below).
+double cull_distance2(const FieldElement& e, Cull kind, double cull_below) {
+  switch (kind) {
+    case Cull::compact: return e.radius * e.radius * (1 + 1e-9);
+    case Cull::never: return kInf;
+    case Cull::gradient: return detail::gaussian_gradient_cull_distance2(e.weight, e.radius, e.taper, cull_below);
+    case Cull::value: break;
+  }
+  if (!(cull_below > 0)) return kInf;
+  if (e.weight <= cull_below) return 0;
+  // weight exp(-omega d^2 / r^2) <= cull_below  <=>  d^2 >= r^2 ln(weight / cull_below) / omega,
+  // made a little larger (1e-9 relative) to absorb the rounding of this formula.
+  return e.radius * e.radius * std::log(e.weight / cull_below) / kGaussOmega * (1 + 1e-9);
+}
 
 class CulledFieldOp final : public CustomOp {
  public:
-  CulledFieldOp(std::vector<FieldElement> elements, CulledFieldOptions options)
-      : elements_(std::move(elements)), options_(options) {
+  // `order`: the elements' densities are order-th partial derivatives of the user's.
+  CulledFieldOp(std::vector<FieldElement> elements, CulledFieldOptions options, int order)
+      : elements_(std::move(elements)), options_(options), order_(order) {
     tapes_.reserve(elements_.size());
-    for (const FieldElement& e : elements_) {
+    std::vector<detail::BvhItem> items;
+    for (std::size_t k = 0; k < elements_.size(); ++k) {
+      const FieldElement& e = elements_[k];
       tapes_.emplace_back(e.density, std::span<const int>(kXyz, 3));
-      Point3 lo, hi;
-      for (int i = 0; i < 3; ++i) lo[i] = std::min(e.a[i], e.b[i]), hi[i] = std::max(e.a[i], e.b[i]);
-      skeleton_lo_.push_back(lo);
-      skeleton_hi_.push_back(hi);
-      // The squared distance beyond which the element's bound is at most cull_below:
-      // weight exp(-omega d^2 / r^2) <= cull_below  <=>  d^2 >= r^2 ln(weight / cull_below) / omega,
-      // made a little larger (1e-9 relative) to absorb the rounding of this formula.
-      double d2 = 0;
-      if (e.falloff == Falloff::compact) d2 = e.radius * e.radius;
-      else if (e.falloff == Falloff::none || options_.cull_below <= 0) d2 = kInf;
-      else if (e.weight > options_.cull_below) d2 = e.radius * e.radius * std::log(e.weight / options_.cull_below) / kGaussOmega;
-      cull_distance2_.push_back(d2 * (1 + 1e-9));
-      if (e.falloff == Falloff::gaussian) ++gaussian_count_;
+      const Cull kind = cull_kind(e, order_);
+      kinds_.push_back(kind);
+      has_compact_ = has_compact_ || kind == Cull::compact;
+      const double d2 = cull_distance2(e, kind, options_.cull_below);
+      if (!std::isfinite(d2)) {
+        always_.push_back(static_cast<std::uint32_t>(k));
+        continue;
+      }
+      detail::BvhItem it{};
+      it.index = static_cast<std::uint32_t>(k);
+      for (int i = 0; i < 3; ++i) it.lo[i] = std::min(e.a[i], e.b[i]), it.hi[i] = std::max(e.a[i], e.b[i]);
+      it.cull2 = d2;
+      it.remainder = kind == Cull::value || kind == Cull::gradient;
+      it.weight = e.weight;
+      it.radius = e.radius;
+      it.taper = kind == Cull::gradient ? e.taper : 0.0;
+      items.push_back(it);
     }
-    // Reach: the cull distance, grown by 1e-6 relative (far above the rounding of the grid's
-    // cell arithmetic) so that overlap in reals implies a shared cell.
-    std::vector<double> reach;
-    for (double d2 : cull_distance2_) reach.push_back(std::isfinite(d2) ? std::sqrt(d2) * (1 + 1e-6) + 1e-300 : kInf);
-    grid_.build(skeleton_lo_, skeleton_hi_, reach);
+    if (options_.hierarchy) bvh_ = detail::ElementBvh(std::move(items));
+    else linear_ = std::move(items);
   }
   std::string name() const override { return "culled_field"; }
   int num_args() const override { return 3; }
@@ -167,17 +101,28 @@ class CulledFieldOp final : public CustomOp {
       return;
     }
     const Interval point[3] = {Interval(args[0]), Interval(args[1]), Interval(args[2])};
+    // The compact elements that may reach the point, in index order.
     std::vector<std::uint32_t> near;
-    grid_.candidates(point, near);
+    if (has_compact_) {
+      auto take = [&](const detail::BvhItem& it) {
+        if (kinds_[it.index] == Cull::compact) near.push_back(it.index);
+      };
+      if (options_.hierarchy) bvh_.query(point, [](const detail::BvhNode&, double, std::uint32_t) {}, take);
+      else
+        for (const detail::BvhItem& it : linear_)
+          if (box_distance2_below(it.lo, it.hi, point) < it.cull2) take(it);
+      std::sort(near.begin(), near.end());
+    }
     PointEvaluator pv;
     double sum = 0;
     // In index order (so the sum rounds as the plain sum does): every non-compact element, and
     // the compact ones that may reach the point.
     std::size_t next = 0;
     for (std::size_t k = 0; k < tapes_.size(); ++k) {
-      while (next < near.size() && near[next] < k) ++next;
-      const bool listed = next < near.size() && near[next] == k;
-      if (elements_[k].falloff == Falloff::compact && (!listed || point_distance2_below(k, args) >= cull_distance2_[k])) continue;
+      if (kinds_[k] == Cull::compact) {
+        while (next < near.size() && near[next] < k) ++next;
+        if (next == near.size() || near[next] != k) continue;
+      }
       sum += pv.eval(tapes_[k], args)[0];
     }
     out[0] = sum;
@@ -189,28 +134,41 @@ class CulledFieldOp final : public CustomOp {
         out[0] = Interval::empty();
         return;
       }
-    std::vector<std::uint32_t> near;
-    grid_.candidates(args, near);
     IntervalEvaluator iv;
     Interval sum(0.0);
-    std::size_t gaussian_evaluated = 0;
-    for (std::uint32_t k : near) {
-      if (fast_box_distance2_below(skeleton_lo_[k], skeleton_hi_[k], args) >= cull_distance2_[k]) continue;
+    auto add = [&](std::uint32_t k) {
       const auto y = iv.eval(tapes_[k], args);
       err[0] |= iv.errors()[0];
       sum = sum + y[0];
-      gaussian_evaluated += elements_[k].falloff == Falloff::gaussian;
+    };
+    for (std::uint32_t k : always_) add(k);
+    // An upper bound of the culled elements' total magnitude: a sum of `terms` non-negative
+    // products in double arithmetic, each rounding with relative error <= 2^-53, so the sum
+    // grown by terms * 2^-52 is an upper bound (no rounding-mode switch per culled subtree).
+    double remainder = 0, terms = 0;
+    if (options_.hierarchy) {
+      bvh_.query(
+          args,
+          [&](const detail::BvhNode& n, double d2, std::uint32_t count) {
+            remainder += static_cast<double>(count) * per_element_bound(n, d2);
+            terms += 2;
+          },
+          [&](const detail::BvhItem& it) { add(it.index); });
+    } else {
+      // The linear scan: each element tested, each culled one bounded by cull_below.
+      double culled = 0;
+      for (const detail::BvhItem& it : linear_) {
+        if (box_distance2_below(it.lo, it.hi, args) >= it.cull2) culled += it.remainder ? 1 : 0;
+        else add(it.index);
+      }
+      remainder = culled * options_.cull_below;
+      terms = 1;
     }
-    // Every culled Gaussian element contributes at most cull_below (compact ones 0): the
-    // count is exact, the product rounded up.
-    const double culled = static_cast<double>(gaussian_count_ - gaussian_evaluated);
-    const double remainder = (Interval(culled) * Interval(options_.cull_below)).hi();
-    out[0] = sum + Interval(0.0, remainder);
+    const double r = remainder * (1 + (terms + 1) * 0x1p-52);
+    out[0] = sum + (order_ == 0 ? Interval(0.0, r) : Interval(-r, r));
   }
 
-  // Another culled field, of the elements' partial derivatives: a compact element's derivative
-  // vanishes where the element does, so it is culled in the same way (remainder 0); the
-  // derivatives of Gaussian elements have no bound here and are never culled.
+  // Another culled field, of the elements' partial derivatives (culled as the header says).
   Fn derivative(std::span<const Fn> args, int k) const override {
     std::shared_ptr<const CustomOp> d;
     {
@@ -218,11 +176,8 @@ class CulledFieldOp final : public CustomOp {
       auto& slot = derivatives_[static_cast<std::size_t>(k)];
       if (!slot) {
         std::vector<FieldElement> es = elements_;
-        for (FieldElement& e : es) {
-          e.density = genmod::derivative(e.density, k);
-          if (e.falloff != Falloff::compact) e.falloff = Falloff::none;
-        }
-        slot = std::make_shared<CulledFieldOp>(std::move(es), options_);
+        for (FieldElement& e : es) e.density = genmod::derivative(e.density, k);
+        slot = std::make_shared<CulledFieldOp>(std::move(es), options_, order_ + 1);
       }
       d = slot;
     }
@@ -231,20 +186,26 @@ class CulledFieldOp final : public CustomOp {
   bool continuous() const override { return true; }
 
  private:
+  // A bound of each culled element with a remainder in node `n`, at squared distance >= d2:
+  // cull_below (each was culled individually or with the subtree, beyond its own cull
+  // distance), or the subtree's bound at d2 where that is smaller.
+  double per_element_bound(const detail::BvhNode& n, double d2) const {
+    const double b = order_ == 0 ? detail::gaussian_value_above(n.weight, n.radius, d2)
+                                 : detail::gaussian_gradient_above(n.weight, n.radius, n.taper, d2);
+    return std::min(options_.cull_below, b);
+  }
+
   std::vector<FieldElement> elements_;
   CulledFieldOptions options_;
+  int order_;
   std::vector<Tape> tapes_;
-  std::vector<Point3> skeleton_lo_, skeleton_hi_;  // the skeletons' bounding boxes
-  std::vector<double> cull_distance2_;             // cull when the box is at least this far (squared)
-  std::size_t gaussian_count_ = 0;                 // culled ones add cull_below each
-  ElementGrid grid_;
+  std::vector<Cull> kinds_;
+  bool has_compact_ = false;
+  std::vector<std::uint32_t> always_;     // never culled: evaluated on every box
+  detail::ElementBvh bvh_;                // the others, with options_.hierarchy
+  std::vector<detail::BvhItem> linear_;   // the others, without
   mutable std::mutex mutex_;
   mutable std::array<std::shared_ptr<const CustomOp>, 3> derivatives_;  // built on first use
-
-  double point_distance2_below(std::size_t k, std::span<const double> p) const {
-    const Interval box[3] = {Interval(p[0]), Interval(p[1]), Interval(p[2])};
-    return fast_box_distance2_below(skeleton_lo_[k], skeleton_hi_[k], box);
-  }
 };
 
 void check_element(const FieldElement& e, std::size_t k) {
@@ -255,19 +216,50 @@ void check_element(const FieldElement& e, std::size_t k) {
     if (!std::isfinite(e.a[i]) || !std::isfinite(e.b[i])) throw std::invalid_argument(who + ": skeleton coordinates must be finite");
   if (!(e.radius > 0 && std::isfinite(e.radius))) throw std::invalid_argument(who + ": radius must be finite and > 0");
   if (!(e.weight >= 0 && std::isfinite(e.weight))) throw std::invalid_argument(who + ": weight must be finite and >= 0");
+  if (std::isnan(e.taper) || std::isinf(e.taper)) throw std::invalid_argument(who + ": taper must be finite");
+}
+
+// Lower bound of the squared distance between the box and the skeleton's bounding box, in
+// interval arithmetic (for the exposed bounds; the hot loops use box_distance2_below).
+double skeleton_distance2_below(const FieldElement& e, std::span<const Interval> box) {
+  Interval sum(0.0);
+  for (int i = 0; i < 3; ++i) {
+    const double s_lo = std::min(e.a[i], e.b[i]), s_hi = std::max(e.a[i], e.b[i]);
+    Interval gap(0.0);
+    if (box[i].lo() > s_hi) gap = Interval(box[i].lo()) - Interval(s_hi);
+    else if (box[i].hi() < s_lo) gap = Interval(s_lo) - Interval(box[i].hi());
+    sum = sum + square(Interval(std::max(gap.lo(), 0.0), std::max(gap.hi(), 0.0)));
+  }
+  return std::max(sum.lo(), 0.0);
 }
 
 }  // namespace
 
+FieldElement gaussian_segment_element(const Point3& a, const Point3& b, double r1, double r2) {
+  const Fn d = segment_convolution(a, b, r1, r2);  // checks the radii and the endpoints
+  const double length = std::sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) + (b[2] - a[2]) * (b[2] - a[2]));
+  // Rounded up a little: the bound grows with the taper.
+  const double taper = r1 == r2 ? 0.0 : std::abs(r2 - r1) / length * (1 + 1e-12);
+  return {d, a, b, 1.0, std::max(r1, r2), Falloff::gaussian, taper};
+}
+
+FieldElement gaussian_point_element(const Point3& c, double r, double weight) {
+  return {point_source(c, r, weight, Kernel::gaussian), c, c, weight, r, Falloff::gaussian, 0.0};
+}
+
 double culled_element_bound(const FieldElement& e, std::span<const Interval> box) {
   if (e.falloff == Falloff::none) return kInf;
-  const double d2 = box_distance2_below(e, box);
+  const double d2 = skeleton_distance2_below(e, box);
   if (e.falloff == Falloff::compact) return d2 >= e.radius * e.radius * (1 + 1e-12) ? 0.0 : kInf;
-  // weight * exp(-omega d2 / r^2), rounded upward: the exponent's upper bound.
-  const Interval exponent = -Interval(kGaussOmega) * Interval(d2) / square(Interval(e.radius));
-  // The relative margin covers the rounding of the element's own point evaluation (its value
-  // may exceed the exact bound by a few ulps where the box touches the nearest point).
-  return (Interval(e.weight) * exp(exponent) * Interval(1 + 1e-12)).hi() + std::numeric_limits<double>::denorm_min();
+  return detail::gaussian_value_above(e.weight, e.radius, d2);
+}
+
+double culled_derivative_bound(const FieldElement& e, std::span<const Interval> box) {
+  const Cull kind = cull_kind(e, 1);
+  if (kind == Cull::never) return kInf;
+  const double d2 = skeleton_distance2_below(e, box);
+  if (kind == Cull::compact) return d2 >= e.radius * e.radius * (1 + 1e-12) ? 0.0 : kInf;
+  return detail::gaussian_gradient_above(e.weight, e.radius, e.taper, d2);
 }
 
 Fn culled_field(const std::vector<FieldElement>& elements, const CulledFieldOptions& options, const Fn& p) {
@@ -275,7 +267,7 @@ Fn culled_field(const std::vector<FieldElement>& elements, const CulledFieldOpti
   if (p.dim() != 3) throw std::invalid_argument("culled_field: the query point must have dimension 3");
   if (!(options.cull_below >= 0)) throw std::invalid_argument("culled_field: cull_below must be >= 0");
   for (std::size_t k = 0; k < elements.size(); ++k) check_element(elements[k], k);
-  auto op = std::make_shared<CulledFieldOp>(elements, options);
+  auto op = std::make_shared<CulledFieldOp>(elements, options, 0);
   return apply_custom(std::shared_ptr<const CustomOp>(op), {p[0], p[1], p[2]});
 }
 

@@ -29,9 +29,9 @@ struct ConvolutionSegment {
   Point3 a, b;
   double r1, r2;
 };
-// One culled_field element per segment. Gaussian kernel: Falloff::gaussian, radius max(r1,
-// r2), weight 1 (the culled field's derivatives are then never culled: the gradient and
-// Hessian tapes the mesher uses pay every segment). B-spline or Wyvill kernel: Falloff::compact
+// One culled_field element per segment. Gaussian kernel: gaussian_segment_element (radius
+// max(r1, r2), weight 1, the taper set: the values and first derivatives are culled; the
+// Hessian tape the mesher uses pays every segment). B-spline or Wyvill kernel: Falloff::compact
 // with the support sqrt(2) kernel_support(kernel) max(r1, r2) (convolution.hpp), so the
 // derivatives are culled as the values are.
 std::vector<FieldElement> convolution_elements(const std::vector<ConvolutionSegment>& segments,

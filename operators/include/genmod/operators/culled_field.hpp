@@ -3,26 +3,38 @@
 // A culled field is the sum of element densities D_e(p) >= 0, as one custom operator of the
 // point p. Its point value is the full sum. Its inclusion over a box X skips each element
 // whose skeleton is far from X and adds a sound remainder in its place: with delta a lower
-// bound of dist(X, skeleton_e) (from the skeleton's bounding box, in outward-rounded
-// arithmetic),
+// bound of dist(X, skeleton_e) (from the skeleton's bounding box, with a rounding margin),
 //  * Falloff::gaussian: D_e <= weight * Gauss(delta / radius) (valid for Gaussian point
 //    sources of radius `radius` and for Gaussian segment convolutions with radius = the larger
 //    endpoint radius, spec §10.2), so a culled element contributes [0, that bound];
 //  * Falloff::compact: D_e = 0 when delta >= radius (the support), so it contributes [0, 0].
 // An element is culled when its bound is at most `cull_below` (precomputed as a distance per
-// element, so the test is one box distance in double arithmetic with a rounding margin) and
-// contributes [0, cull_below] (gaussian) or [0, 0] (compact); the others are bounded by their
-// own (kernel) inclusion functions. The sum of all remainders keeps the result sound, so a
-// field of thousands of elements prunes per box at the cost of one box distance per element
-// (a linear scan: no hierarchy yet). Point evaluation skips compact elements whose support
-// cannot reach the point (they are exactly 0 there). The derivative is a culled field of the
-// elements' derivatives: compact ones culled as their elements, Gaussian ones never.
+// element, so the test is one box distance in double arithmetic with a rounding margin).
+//
+// The elements sit in a bounding-volume hierarchy of their skeleton boxes, built once: a
+// subtree whose box is beyond the largest cull distance of its elements is culled with one
+// test, as a CSG tree prunes a branch, and contributes [0, n * b] for its n Gaussian elements,
+// b = min(cull_below, Gauss bound at the subtree's distance with its largest weight and
+// radius) (compact ones [0, 0]); the elements that are not culled are bounded by their own
+// (kernel) inclusion functions. A box thus visits only the part of the hierarchy near it:
+// fields of thousands of elements prune per box. Point evaluation sums every Gaussian element
+// in index order (the exact sum) and only the compact elements whose support may reach the
+// point (the others are exactly 0 there).
+//
+// The derivative is a culled field of the elements' partial derivatives: compact elements are
+// culled as their densities are (remainder 0); a Gaussian element that declares itself a
+// Gaussian convolution (taper >= 0, as the factories below do) is culled by the rigorous bound
+//   |dD_e/dx_k| <= weight exp(-omega s^2) [(c0 + c1 s) + taper (c2 + c1 s^2)] / radius,
+//   s = delta / radius >= 1.5, c0 = sqrt(omega/pi), c1 = 2 omega, c2 = 2/sqrt(2 pi e)
+// (derived in culled_field_bounds.cpp), contributing [-b, b]; other Gaussian elements'
+// derivatives, and all second and higher derivatives of Gaussian elements, are never culled.
 //
 // Example:
 //   Point3 a{0, 0, 0}, b{1, 0, 0};
 //   double r = 0.1;
 //   std::vector<FieldElement> es;
 //   es.push_back({segment_convolution(a, b, r), a, b, 1.0, r, Falloff::gaussian});
+//   es.push_back(gaussian_segment_element(b, {1, 1, 0}, r, 2 * r));  // derivatives culled too
 //   Fn D = culled_field(es);
 #pragma once
 
@@ -44,10 +56,25 @@ struct FieldElement {
   double weight;    // gaussian: the density's peak bound factor; compact: unused (>= 0)
   double radius;    // gaussian: the Gaussian radius; compact: the support distance
   Falloff falloff;
+  // gaussian only. >= 0: the density is `weight` times a Gaussian point source of this radius
+  // (point_source) or a Gaussian segment convolution of a-b whose larger end radius is
+  // `radius` (segment_convolution), and taper >= |r2 - r1| / |b - a| (0 for a constant radius
+  // or a point): its first derivatives are then culled by the bound above. Negative (the
+  // default, for densities of another form): its derivatives are never culled.
+  double taper = -1;
 };
+
+// The elements of the usual Gaussian densities, with every culling parameter set:
+// segment_convolution(a, b, r1, r2) and point_source(c, r, weight).
+FieldElement gaussian_segment_element(const Point3& a, const Point3& b, double r1, double r2);
+FieldElement gaussian_point_element(const Point3& c, double r, double weight = 1.0);
 
 struct CulledFieldOptions {
   double cull_below = 1e-6;  // cull an element whose bound over the box is at most this
+  // Visit the elements through the hierarchy (true) or test every element against every box
+  // (false: a linear scan, the baseline the hierarchy is measured and tested against). Both
+  // give sound bounds; the hierarchy's remainders are at least as tight.
+  bool hierarchy = true;
 };
 
 // The culled sum of `elements` as a scalar Fn of p = (x(0), x(1), x(2)). With `p` given, of
@@ -59,5 +86,10 @@ Fn culled_field(const std::vector<FieldElement>& elements, const CulledFieldOpti
 // The bound that culling uses for one element over a box (exposed for tests): an upper bound
 // of D_e over the box, +infinity when the element cannot be culled there.
 double culled_element_bound(const FieldElement& element, std::span<const Interval> box);
+// The same for the element's first partial derivatives: an upper bound of |dD_e/dx_k| over the
+// box for every k; +infinity where no bound is claimed (Falloff::none, a Gaussian element with
+// taper < 0, or a box nearer than 1.5 radius to a Gaussian skeleton, or within a compact
+// element's support).
+double culled_derivative_bound(const FieldElement& element, std::span<const Interval> box);
 
 }  // namespace genmod

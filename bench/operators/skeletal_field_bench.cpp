@@ -1,0 +1,167 @@
+// Skeletal implicit fields of many Gaussian segment convolutions (issue 11): what users do
+// with them, timed for the plain sum, the culled field with a linear scan of the elements and
+// the culled field with its hierarchy, in one run (compare the *_median rows: CPU time).
+//
+//  * BM_FieldOctree/<mode>/<n>/<depth>/<side>: the interval classification of f = 1/2 - D
+//    over an octree of the cube of side <side>/1000 centred at the origin down to <depth> (a
+//    box whose bound excludes 0 is a leaf, the others are split). Modes: 0 the plain sum of the
+//    n densities as one tape, 1 the culled field with culling disabled (cull_below = 0: the
+//    same sum as one custom operator), 2 the culled field with a linear scan of the elements,
+//    3 with the hierarchy. Counters: boxes visited, boxes left ambiguous at the deepest level.
+//    Registered: the cube 0.55 to depth 3 (cells 0.069, about two radii) in every mode, and
+//    the whole field (cube 4.4, depth 6) for the linear scan and the hierarchy (the sums would
+//    take about 100 times longer).
+//  * BM_GradientOctree/<mode>/...: the same octree, and at each box that may hold surface the
+//    gradient's inclusion as well (the mesher's normal-cone test): modes 1-3.
+//  * BM_MeshField/<mode>/<n>: mesh_implicit of the field in the cube of side 0.16 at the origin
+//    at cell size 0.02, one thread (modes 1 and 3; 1,000 elements: the mesher's exact point
+//    evaluations pay every Gaussian element, so 10,000 would take minutes per run).
+//
+// The skeleton: a random walk of n segments of length 0.05 with direction persistence in
+// [-2, 2]^3, branching from a random earlier node one time in ten; radius 0.02 .. 0.04.
+#include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/kernel/tape.hpp"
+#include "genmod/operators/convolution.hpp"
+#include "genmod/operators/culled_field.hpp"
+#include "genmod/tessellate/implicit_mesher.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <array>
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace {
+
+using namespace genmod;
+
+std::vector<FieldElement> walk(int n) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Point3> nodes = {{0, 0, 0}};
+  Point3 dir = {1, 0, 0};
+  std::size_t from = 0;
+  std::vector<FieldElement> es;
+  for (int i = 0; i < n; ++i) {
+    if (std::uniform_int_distribution<int>(0, 9)(rng) == 0) from = std::uniform_int_distribution<std::size_t>(0, nodes.size() - 1)(rng);
+    double len = 0;
+    for (int k = 0; k < 3; ++k) dir[k] += 0.5 * u(rng), len += dir[k] * dir[k];
+    len = std::sqrt(len);
+    const Point3 a = nodes[from];
+    Point3 b;
+    for (int k = 0; k < 3; ++k) {
+      dir[k] /= len;
+      b[k] = a[k] + 0.05 * dir[k];
+      if (std::abs(b[k]) > 2) dir[k] = -dir[k], b[k] = a[k] + 0.05 * dir[k];
+    }
+    nodes.push_back(b);
+    from = nodes.size() - 1;
+    const double r = 0.02 + 0.01 * (1 + u(rng));
+    es.push_back(gaussian_segment_element(a, b, r, r));
+  }
+  return es;
+}
+
+Fn balanced_sum(const std::vector<FieldElement>& es) {
+  std::vector<Fn> terms;
+  for (const FieldElement& e : es) terms.push_back(e.density);
+  while (terms.size() > 1) {
+    std::vector<Fn> next;
+    for (std::size_t i = 0; i + 1 < terms.size(); i += 2) next.push_back(terms[i] + terms[i + 1]);
+    if (terms.size() % 2) next.push_back(terms.back());
+    terms = std::move(next);
+  }
+  return terms[0];
+}
+
+// The density of mode 0 (plain sum), 1 (culling disabled), 2 (linear scan), 3 (hierarchy).
+Fn density(const std::vector<FieldElement>& es, int mode) {
+  switch (mode) {
+    case 0: return balanced_sum(es);
+    case 1: return culled_field(es, {.cull_below = 0});
+    case 2: return culled_field(es, {.hierarchy = false});
+    default: return culled_field(es);
+  }
+}
+
+const std::vector<FieldElement>& field(int n) {
+  static std::vector<FieldElement> cache;
+  if (static_cast<int>(cache.size()) != n) cache = walk(n);
+  return cache;
+}
+
+struct OctreeCount {
+  std::size_t boxes = 0, ambiguous = 0;
+};
+
+// The octree classification of f (and its gradient, when given) over the cube of side `side`
+// centred at the origin, down to `depth`.
+OctreeCount octree(const Tape& f, const Tape* gradient, double side, int depth) {
+  IntervalEvaluator iv;
+  OctreeCount count;
+  struct Cell {
+    std::array<double, 3> lo;
+    double size;
+    int depth;
+  };
+  std::vector<Cell> stack{{{-side / 2, -side / 2, -side / 2}, side, 0}};
+  std::vector<Interval> box(3);
+  while (!stack.empty()) {
+    const Cell c = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < 3; ++i) box[static_cast<std::size_t>(i)] = Interval(c.lo[static_cast<std::size_t>(i)], c.lo[static_cast<std::size_t>(i)] + c.size);
+    ++count.boxes;
+    const Interval y = iv.eval(f, box)[0];
+    if (!y.contains(0.0)) continue;
+    if (gradient) benchmark::DoNotOptimize(iv.eval(*gradient, box)[0]);
+    if (c.depth == depth) {
+      ++count.ambiguous;
+      continue;
+    }
+    const double h = c.size / 2;
+    for (int k = 0; k < 8; ++k)
+      stack.push_back({{c.lo[0] + (k & 1) * h, c.lo[1] + ((k >> 1) & 1) * h, c.lo[2] + ((k >> 2) & 1) * h}, h, c.depth + 1});
+  }
+  return count;
+}
+
+void BM_FieldOctree(benchmark::State& state) {
+  const auto& es = field(static_cast<int>(state.range(1)));
+  const int xyz[3] = {0, 1, 2};
+  const Tape f(density_to_implicit(density(es, static_cast<int>(state.range(0)))), xyz);
+  OctreeCount c;
+  for (auto _ : state) c = octree(f, nullptr, 1e-3 * static_cast<double>(state.range(3)), static_cast<int>(state.range(2)));
+  state.counters["boxes"] = static_cast<double>(c.boxes);
+  state.counters["ambiguous"] = static_cast<double>(c.ambiguous);
+}
+
+void BM_GradientOctree(benchmark::State& state) {
+  const auto& es = field(static_cast<int>(state.range(1)));
+  const int xyz[3] = {0, 1, 2};
+  const Fn d = density_to_implicit(density(es, static_cast<int>(state.range(0))));
+  const Tape f(d, xyz), g(cat({derivative(d, 0), derivative(d, 1), derivative(d, 2)}), xyz);
+  OctreeCount c;
+  for (auto _ : state) c = octree(f, &g, 1e-3 * static_cast<double>(state.range(3)), static_cast<int>(state.range(2)));
+  state.counters["boxes"] = static_cast<double>(c.boxes);
+  state.counters["ambiguous"] = static_cast<double>(c.ambiguous);
+}
+
+void BM_MeshField(benchmark::State& state) {
+  const auto& es = field(static_cast<int>(state.range(1)));
+  const ImplicitSurface s(density_to_implicit(density(es, static_cast<int>(state.range(0)))));
+  const Box3 box = {Interval(-0.08, 0.08), Interval(-0.08, 0.08), Interval(-0.08, 0.08)};
+  ImplicitMesh m;
+  for (auto _ : state) m = mesh_implicit(s, box, {.min_feature = 0.02, .max_cell = 0.02, .threads = 1});
+  state.counters["triangles"] = static_cast<double>(m.mesh.triangles.size());
+  state.counters["surface_cells"] = static_cast<double>(m.stats.surface_cells);
+}
+
+// Arguments: mode, elements, octree depth, cube side in thousandths.
+BENCHMARK(BM_FieldOctree)->ArgsProduct({{0, 1, 2, 3}, {10000}, {3}, {550}})->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FieldOctree)->ArgsProduct({{2, 3}, {10000}, {6}, {4400}})->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GradientOctree)->ArgsProduct({{1, 2, 3}, {10000}, {3}, {550}})->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true)->Unit(benchmark::kMillisecond);
+// Arguments: mode, elements.
+BENCHMARK(BM_MeshField)->ArgsProduct({{1, 3}, {1000}})->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true)->Unit(benchmark::kMillisecond);
+
+}  // namespace
