@@ -77,7 +77,7 @@ elseif(CASE STREQUAL "mesh_procedural")
   # procedure and the parameter.
   expect_ok(list)
   foreach(entry "leg (procedural, cacheable)" "chair (procedural)" "couch (procedural)" "table (procedural)"
-          "luggage (procedural)" "numLegs          4        Integer" "foot (procedural, cacheable)"
+          "luggage (procedural, cacheable)" "numLegs          4        Integer" "foot (procedural, cacheable)"
           "human (procedural)" "tree (procedural, cacheable)" "branch (procedural, cacheable)")
     string(FIND "${out}" "${entry}" at)
     if(at EQUAL -1)
