@@ -142,12 +142,6 @@ inline Interval rounded_floor_like(const Interval& x, bool is_floor, bool& jump)
 
 }  // namespace
 
-std::span<const Interval> IntervalEvaluator::eval(const Tape& tape, std::span<const Interval> box) {
-  run(tape, box, detail::clauses(tape), detail::call_arg_registers(tape), tape.num_registers());
-  finish(detail::output_registers(tape));
-  return out_;
-}
-
 void IntervalEvaluator::run(const Tape& tape, std::span<const Interval> box, std::span<const Clause> clauses,
                             std::span<const std::uint32_t> call_args, std::uint32_t num_registers) {
   detail::check_inputs(tape, box.size(), "IntervalEvaluator");
@@ -280,6 +274,16 @@ void IntervalEvaluator::run(const Tape& tape, std::span<const Interval> box, std
     }
   }
   jump_ = jump;
+}
+
+std::span<const Interval> IntervalEvaluator::eval(const Tape& tape, std::span<const Interval> box) {
+  run(tape, box, detail::clauses(tape), detail::call_arg_registers(tape), tape.num_registers());
+  finish(detail::output_registers(tape));
+  return out_;
+}
+
+void IntervalEvaluator::eval_ssa(const Tape& tape, std::span<const Interval> box) {
+  run(tape, box, detail::ssa(tape), detail::call_arg_values(tape), detail::num_values(tape));
 }
 
 void IntervalEvaluator::finish(std::span<const std::uint32_t> output_registers) {

@@ -55,7 +55,7 @@ bool TapeContractor::contract(const Tape& tape, std::span<Interval> box, const I
     throw std::invalid_argument("genmod: TapeContractor: the tape has " + std::to_string(tape.num_outputs()) +
                                 " outputs, expected 1");
   // Forward: the evaluator's enclosures and error bits for every SSA value.
-  forward_.run(tape, box, detail::ssa(tape), detail::call_arg_values(tape), detail::num_values(tape));
+  forward_.eval_ssa(tape, box);
   const std::uint32_t root = detail::output_values(tape)[0];
   if (forward_.err_[root] == kCertainError) return false;  // f is NaN everywhere on the box
   v_.assign(forward_.regs_.begin(), forward_.regs_.end());

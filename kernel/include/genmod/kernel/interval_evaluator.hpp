@@ -48,6 +48,8 @@ class IntervalEvaluator {
   // register file of `num_registers`; the outputs are left in regs_ / err_.
   void run(const Tape& tape, std::span<const Interval> box, std::span<const Clause> clauses,
            std::span<const std::uint32_t> call_args, std::uint32_t num_registers);
+  // run() over the SSA form: every value of the tape, by id, in regs_ / err_.
+  void eval_ssa(const Tape& tape, std::span<const Interval> box);
   Interval other_op(const Clause& c, std::span<const double> k, std::uint8_t& err, bool& jump);
   bool call(const Tape& tape, std::uint32_t call);
   void finish(std::span<const std::uint32_t> output_registers);
