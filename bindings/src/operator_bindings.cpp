@@ -104,16 +104,29 @@ void bind_more_skeletal(py::module_& m) {
       .value("compact", Falloff::compact)
       .value("none", Falloff::none);
   py::class_<FieldElement>(m, "FieldElement", R"doc(One element of a culled field: its density Fn, its skeleton segment a-b
-(a point when a == b), weight and radius of its falloff bound, and the falloff kind.)doc")
-      .def(py::init([](const Fn& density, Point3 a, Point3 b, double weight, double radius, Falloff falloff) {
-             return FieldElement{density, a, b, weight, radius, falloff};
-           }), py::arg("density"), py::arg("a"), py::arg("b"), py::arg("weight"), py::arg("radius"), py::arg("falloff"));
-  m.def("culled_field", [](const std::vector<FieldElement>& elements, double cull_below) {
+(a point when a == b), weight and radius of its falloff bound, and the falloff kind. taper >= 0
+declares a Gaussian point source or segment convolution (taper >= |r2 - r1| / |b - a|) whose
+first derivatives may be culled too; the default -1 never culls them.)doc")
+      .def(py::init([](const Fn& density, Point3 a, Point3 b, double weight, double radius, Falloff falloff,
+                       double taper) {
+             return FieldElement{density, a, b, weight, radius, falloff, taper};
+           }), py::arg("density"), py::arg("a"), py::arg("b"), py::arg("weight"), py::arg("radius"), py::arg("falloff"),
+           py::arg("taper") = -1.0)
+      .def_readonly("weight", &FieldElement::weight)
+      .def_readonly("radius", &FieldElement::radius)
+      .def_readonly("taper", &FieldElement::taper);
+  m.def("gaussian_segment_element", &gaussian_segment_element, py::arg("a"), py::arg("b"), py::arg("r1"),
+        py::arg("r2"), "The element of segment_convolution(a, b, r1, r2) with every culling parameter set.");
+  m.def("gaussian_point_element", &gaussian_point_element, py::arg("c"), py::arg("r"), py::arg("weight") = 1.0,
+        "The element of point_source(c, r, weight) with every culling parameter set.");
+  m.def("culled_field", [](const std::vector<FieldElement>& elements, double cull_below, bool hierarchy) {
         CulledFieldOptions o;
         o.cull_below = cull_below;
+        o.hierarchy = hierarchy;
         return culled_field(elements, o);
-      }, py::arg("elements"), py::arg("cull_below") = 1e-6,
-      "The sum of the elements' densities, culling far elements per box with a sound remainder.");
+      }, py::arg("elements"), py::arg("cull_below") = 1e-6, py::arg("hierarchy") = true,
+      "The sum of the elements' densities, culling far elements per box with a sound remainder (through a "
+      "bounding-volume hierarchy, or a linear scan with hierarchy=False).");
   m.def("convexity_blend", &convexity_blend, py::arg("blend"), py::arg("union_field"), py::arg("convexity"),
         "Interpolates a blend and a union field by a convexity in [0, 1] (eqs. 5.15, 5.17, 5.37).");
   m.def("grouped_blend", [](const std::vector<Fn>& densities, const std::vector<std::vector<int>>& blend_with, double iso) {

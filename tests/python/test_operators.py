@@ -144,5 +144,22 @@ def test_more_skeletal_fields():
     samples = gm.Tape(field, 3)(box[:, 0] + (box[:, 1] - box[:, 0]) * np.random.default_rng(6).random((500, 3)))
     enclosure = field.bound(box)[0]
     assert enclosure[0] <= samples.min() and samples.max() <= enclosure[1]
+    # Elements from the factories (Gaussian form declared: their derivatives cull too), with the
+    # hierarchy and with the linear scan: the value is the plain sum, and the derivative's
+    # bound over boxes near and far contains its sampled values.
+    declared = [gm.gaussian_segment_element([float(i), 0, 0], [i + 0.5, 0, 0], 0.2, 0.3) for i in range(20)]
+    assert declared[0].taper == pytest.approx(0.2) and declared[0].radius == 0.3
+    point = np.array([0.25, 0.1, 0.0])
+    plain = sum(gm.Tape(gm.segment_convolution([float(i), 0, 0], [i + 0.5, 0, 0], 0.2, 0.3), 3)(point)[0]
+                for i in range(20))
+    rng = np.random.default_rng(7)
+    for hierarchy in (True, False):
+        culled = gm.culled_field(declared, hierarchy=hierarchy)
+        assert gm.Tape(culled, 3)(point)[0] == pytest.approx(plain, rel=1e-12)
+        d0 = gm.derivative(culled, 0)
+        for box in (np.array([[3.6, 4.1], [0.45, 0.9], [-0.2, 0.2]]), np.array([[2.0, 2.4], [1.0, 1.3], [0.0, 0.3]])):
+            lo, hi = d0.bound(box)[0]
+            values = gm.Tape(d0, 3)(box[:, 0] + (box[:, 1] - box[:, 0]) * rng.random((400, 3)))[:, 0]
+            assert lo <= values.min() and values.max() <= hi
     blob = gm.grouped_blend([gm.point_source([0, 0, 0], 0.5), gm.point_source([0.6, 0, 0], 0.5)], [[1], [0]])
     assert gm.Tape(blob, 3)(np.array([0.3, 0.0, 0.0]))[0] < 0  # blended: inside between the two
