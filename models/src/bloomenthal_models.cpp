@@ -213,7 +213,10 @@ std::vector<ConvolutionSegment> hand_segments(double grip, double palm_radius) {
   V second[5];  // the second knuckles
   for (int f = 0; f < 5; ++f) {
     const Finger& g = finger_table()[f];
-    const M r1 = f == 0 ? mulm(rot_z(g.theta + 60), rot_y(-g.phi)) : mulm(rot_z(g.theta), rot_x(-g.phi));
+    // The thumb turns 15 degrees further than its theta about the palm normal and flexes by phi
+    // toward the palm like the fingers: the reconstruction's Rz(theta + 60) Ry(-phi) sent it
+    // straight out sideways (Ry leaves the bone's axis +y where it is), a stick at right angles.
+    const M r1 = f == 0 ? mulm(rot_z(g.theta + 15), rot_x(-g.phi)) : mulm(rot_z(g.theta), rot_x(-g.phi));
     const M r2 = mulm(r1, rot_x(-grip * g.grip2));
     const M r3 = mulm(r2, rot_x(-grip * g.grip3));
     const V y{0, 1, 0};
@@ -245,10 +248,11 @@ std::vector<ConvolutionSegment> hand_segments(double grip, double palm_radius) {
   const V thumb_second = add(second[0], V{0, 0, 0.5 * finger_table()[0].radius});
   out.push_back({thumb_mid, add(knuckle[0], V{0, 0, 0.45 * palm_radius}), 0.03, 0.03});
   out.push_back({add(knuckle[0], V{0, 0, 0.45 * palm_radius}), thumb_second, 0.03, 0.03});
-  // Veins on the back: polylines of 6 and 5 segments, radius 0.02.
-  const V vein1[7] = {{-0.3, -0.3, 0.24}, {-0.25, 0.05, 0.2}, {-0.32, 0.4, 0.19}, {-0.28, 0.75, 0.19},
+  // Veins on the back: polylines of 6 and 5 segments, radius 0.02, starting inside the wrist
+  // stub (started outside it, their ends poked out of the wrist as two spikes).
+  const V vein1[7] = {{-0.22, -0.1, 0.18}, {-0.25, 0.05, 0.2}, {-0.32, 0.4, 0.19}, {-0.28, 0.75, 0.19},
                       {-0.38, 1.05, 0.18}, {-0.42, 1.3, 0.16}, {-0.5, 1.5, 0.14}};
-  const V vein2[6] = {{0.25, -0.3, 0.24}, {0.22, 0.1, 0.2}, {0.3, 0.45, 0.19}, {0.18, 0.8, 0.19}, {0.12, 1.15, 0.18},
+  const V vein2[6] = {{0.2, -0.1, 0.18}, {0.22, 0.1, 0.2}, {0.3, 0.45, 0.19}, {0.18, 0.8, 0.19}, {0.12, 1.15, 0.18},
                       {0.08, 1.45, 0.15}};
   // The polylines are given for palm_radius 0.2 and sunk into the back with it.
   auto sunk = [&](V v) { return V{v[0], v[1], v[2] * palm_radius / 0.2 - 0.03}; };

@@ -81,7 +81,9 @@ std::vector<ConvolutionSegment> arm_segments(double elbow_degrees = 30.0, double
 // reconstruction of the rest (§7.2's "proposed demo"): palm in the xy-plane, fingers toward
 // +y, back of the hand toward +z. Fingers are three tapered phalanx segments from their
 // knuckle, bent by R1 = Rz(theta) Rx(-phi), then Rx(-grip2), Rx(-grip3) (the thumb:
-// Rz(theta + 60) Ry(-phi)); the palm is five metacarpal segments of radius `palm_radius`
+// Rz(theta + 15) Rx(-phi), pointing 45 degrees off the fingers and flexed toward the palm;
+// the research notes' Rz(theta + 60) Ry(-phi) points it straight out sideways, as Ry leaves
+// the bone axis unchanged); the palm is five metacarpal segments of radius `palm_radius`
 // from the wrist to the knuckles plus a knuckle bar and a wrist bar; tendons (radius 0.03)
 // lie on the back of the hand from mid-palm to the second knuckles; two veins (6 and 5
 // segments, radius 0.02) on the back; the adductor pollicis is one segment (radius 0.12).
