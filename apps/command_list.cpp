@@ -4,6 +4,7 @@
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
 #include "genmod/models/procedural_models.hpp"
+#include "genmod/models/region_gallery.hpp"
 #include "genmod/models/trimmed_csg.hpp"
 
 #include <cstdio>
@@ -30,6 +31,13 @@ int run_list(std::span<const std::string> args) {
   }
   std::printf("\nCSG of trimmed surfaces (genmod mesh NAME [--tolerance W] -o FILE; W is the sampling box width, default 0.05)\n");
   for (const models::CsgModel& m : models::csg_models()) std::printf("%s (csg)\n  %s\n", m.name.c_str(), m.description.c_str());
+  std::printf("\nregion models (several regions; their boundaries form a non-manifold surface; genmod mesh NAME "
+              "[--param K=V] [--cube-size H] -o FILE)\n");
+  for (const models::RegionModel& m : models::region_models()) {
+    std::printf("%s (regions)\n  %s\n  cube size %g\n", m.name.c_str(), m.description.c_str(), m.cube_size);
+    for (const models::ModelParameter& p : m.parameters)
+      std::printf("    %-14s %-8g %s\n", p.name.c_str(), p.value, p.doc.c_str());
+  }
   std::printf("\nprocedural models (Morkel's registered procedures; genmod mesh NAME [--param K=V] [--seed S] -o FILE)\n");
   const ProcedureRegistry& registry = models::procedural_registry();
   for (const models::ProceduralModel& m : models::procedural_gallery()) {

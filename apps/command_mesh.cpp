@@ -7,6 +7,7 @@
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
 #include "genmod/models/procedural_models.hpp"
+#include "genmod/models/region_gallery.hpp"
 #include "genmod/models/trimmed_csg.hpp"
 #include "genmod/tessellate/mesh_io.hpp"
 #include "genmod/tessellate/validate.hpp"
@@ -26,20 +27,6 @@
 namespace genmod::app {
 namespace {
 
-// One `--param k=v`: the name and the value (UsageError naming the bad argument otherwise).
-std::pair<std::string, double> parse_param(const std::string& text) {
-  const std::size_t eq = text.find('=');
-  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
-    throw UsageError("--param expects NAME=VALUE, got '" + text + "'");
-  const std::string value_text = text.substr(eq + 1);
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(value_text.c_str(), &end);
-  if (end != value_text.c_str() + value_text.size() || errno == ERANGE || !std::isfinite(value))
-    throw UsageError("--param " + text.substr(0, eq) + ": '" + value_text + "' is not a finite number");
-  return {text.substr(0, eq), value};
-}
-
 int run_mesh(std::span<const std::string> args) {
   for (const std::string& arg : args)
     if ((arg.size() > 3 && arg.compare(arg.size() - 3, 3, ".vm") == 0) || models::find_implicit_model(arg))
@@ -48,20 +35,10 @@ int run_mesh(std::span<const std::string> args) {
     if (models::find_procedural_model(arg)) return run_mesh_procedural(args);
   for (const std::string& arg : args)
     if (models::is_csg_model(arg)) return run_mesh_csg(args);
-  // --param repeats for different parameters: take every occurrence out before the generic
-  // scanner sees the rest. The same parameter twice is a mistake, not "last one wins".
-  models::ParameterValues overrides;
+  for (const std::string& arg : args)
+    if (models::find_region_model(arg)) return run_mesh_regions(args);
   std::vector<std::string> rest;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--param" || args[i] == "-p") {
-      if (i + 1 >= args.size()) throw UsageError("option " + args[i] + " needs a value");
-      const auto [name, value] = parse_param(args[++i]);
-      if (!overrides.emplace(name, value).second)
-        throw UsageError("--param " + name + " is given more than once (set each parameter once)");
-    } else {
-      rest.push_back(args[i]);
-    }
-  }
+  const models::ParameterValues overrides = take_param_options(args, rest);
   static constexpr std::array<const char*, 1> kFlags{"--no-check"};
   static constexpr std::array<const char*, 8> kValued{"--res", "-o", "--output", "--tolerance", "--max-leaves",
                                                       "--threads", "--max-memory", "--max-seconds"};

@@ -37,6 +37,8 @@ int run_mesh_implicit(std::span<const std::string> args);
 int run_mesh_procedural(std::span<const std::string> args);
 // genmod mesh NAME ...: the CSG models of trimmed surfaces (trimmed_csg.hpp).
 int run_mesh_csg(std::span<const std::string> args);
+// genmod mesh NAME ...: the region models, non-manifold meshes (region_gallery.hpp).
+int run_mesh_regions(std::span<const std::string> args);
 // genmod render MODEL --3d ...: the shaded 3-D path of the render command.
 int run_render_shaded(std::span<const std::string> args);
 

@@ -67,4 +67,37 @@ void check_writable(const std::string& output) {
   if (::access(dir.c_str(), W_OK) != 0) throw UsageError("output '" + output + "': directory is not writable");
 }
 
+namespace {
+
+// One `--param k=v`: the name and the value (UsageError naming the bad argument otherwise).
+std::pair<std::string, double> parse_param(const std::string& text) {
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw UsageError("--param expects NAME=VALUE, got '" + text + "'");
+  const std::string value_text = text.substr(eq + 1);
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(value_text.c_str(), &end);
+  if (end != value_text.c_str() + value_text.size() || errno == ERANGE || !std::isfinite(value))
+    throw UsageError("--param " + text.substr(0, eq) + ": '" + value_text + "' is not a finite number");
+  return {text.substr(0, eq), value};
+}
+
+}  // namespace
+
+std::map<std::string, double> take_param_options(std::span<const std::string> args, std::vector<std::string>& rest) {
+  std::map<std::string, double> overrides;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    if (args[i] == "--param" || args[i] == "-p") {
+      if (i + 1 >= args.size()) throw UsageError("option " + args[i] + " needs a value");
+      const auto [name, value] = parse_param(args[++i]);
+      if (!overrides.emplace(name, value).second)
+        throw UsageError("--param " + name + " is given more than once (set each parameter once)");
+    } else {
+      rest.push_back(args[i]);
+    }
+  }
+  return overrides;
+}
+
 }  // namespace genmod::app

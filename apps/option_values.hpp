@@ -6,8 +6,11 @@
 #include "genmod/tessellate/box3.hpp"
 
 #include <initializer_list>
+#include <map>
+#include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace genmod::app {
 
@@ -25,5 +28,9 @@ Box3 parse_box(const std::string& text);
 // in an existing, writable directory; so that a long computation does not end in a failed
 // write.
 void check_writable(const std::string& output);
+
+// Takes every `--param NAME=VALUE` (or `-p`) out of `args` and returns the values; the other
+// arguments go to `rest`, in order. A parameter given twice is a UsageError, not "last wins".
+std::map<std::string, double> take_param_options(std::span<const std::string> args, std::vector<std::string>& rest);
 
 }  // namespace genmod::app

@@ -10,6 +10,7 @@
 #include "genmod/kernel/tape.hpp"
 #include "genmod/models/bloomenthal_models.hpp"
 #include "genmod/models/implicit_gallery.hpp"
+#include "genmod/models/region_gallery.hpp"
 #include "genmod/operators/convolution.hpp"
 #include "genmod/tessellate/mesh_io.hpp"
 #include "genmod/tessellate/nonmanifold_polygonizer.hpp"
@@ -243,6 +244,45 @@ TEST(BloomenthalModels, ParametersAreChecked) {
   EXPECT_THROW(build_implicit_model(*find_implicit_model("arc_convolution"), {{"count", 2.5}}), std::invalid_argument);
   EXPECT_THROW(build_implicit_model(*find_implicit_model("convolution_arm"), {{"elbow", -1.0}}), std::invalid_argument);
   EXPECT_THROW(build_implicit_model(*find_implicit_model("hand"), {{"palm_radius", 0.0}}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace genmod::models
+
+namespace genmod::models {
+namespace {
+
+// The maple leaf as a gallery model: four sheets, the blade's normals up (+z) and the veins'
+// pointing out of them (into the higher-numbered region), parameters checked by name.
+TEST(RegionGallery, MapleLeafSheetsAndOrientation) {
+  ASSERT_NE(find_region_model("maple_leaf"), nullptr);
+  EXPECT_EQ(find_region_model("maple"), nullptr);
+  const RegionModelMesh m = mesh_region_model("maple_leaf", {}, 0.04);
+  ASSERT_EQ(m.region_names.size(), 4u);
+  EXPECT_TRUE(m.result.stats.limits_hit.empty());
+  std::map<std::pair<int, int>, int> sheets;
+  std::size_t blade = 0, blade_up = 0;
+  for (std::size_t t = 0; t < m.result.mesh.triangles.size(); ++t) {
+    const auto pair = m.result.regions[t];
+    ++sheets[pair];
+    if (pair != std::pair{2, 3}) continue;  // below | above: the blade
+    const auto& tri = m.result.mesh.triangles[t];
+    const auto& a = m.result.mesh.vertices[tri[0]];
+    const auto& b = m.result.mesh.vertices[tri[1]];
+    const auto& c = m.result.mesh.vertices[tri[2]];
+    const double nz = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    ++blade;
+    if (nz > 0) ++blade_up;
+  }
+  EXPECT_EQ(sheets.size(), 4u);
+  for (const auto& pair : {std::pair{0, 1}, std::pair{0, 2}, std::pair{0, 3}, std::pair{2, 3}})
+    EXPECT_GT(sheets[pair], 0) << pair.first << "," << pair.second;
+  ASSERT_GT(blade, 500u);
+  EXPECT_GE(blade_up, blade * 99 / 100);  // the flat blade faces up (a few junction triangles tilt)
+  EXPECT_THROW(mesh_region_model("maple", {}), std::invalid_argument);
+  EXPECT_THROW(mesh_region_model("maple_leaf", {{"vein_radius", 0.5}}), std::invalid_argument);
+  EXPECT_THROW(mesh_region_model("maple_leaf", {{"veins", 3}}), std::invalid_argument);
+  EXPECT_THROW(mesh_region_model("maple_leaf", {}, -1.0), std::invalid_argument);
 }
 
 }  // namespace
