@@ -25,6 +25,8 @@
 #include "genmod/operators/culled_field.hpp"
 #include "genmod/tessellate/implicit_mesher.hpp"
 
+#include "random_skeleton.hpp"
+
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -37,29 +39,9 @@ namespace {
 using namespace genmod;
 
 std::vector<FieldElement> walk(int n) {
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> u(-1, 1);
-  std::vector<Point3> nodes = {{0, 0, 0}};
-  Point3 dir = {1, 0, 0};
-  std::size_t from = 0;
   std::vector<FieldElement> es;
-  for (int i = 0; i < n; ++i) {
-    if (std::uniform_int_distribution<int>(0, 9)(rng) == 0) from = std::uniform_int_distribution<std::size_t>(0, nodes.size() - 1)(rng);
-    double len = 0;
-    for (int k = 0; k < 3; ++k) dir[k] += 0.5 * u(rng), len += dir[k] * dir[k];
-    len = std::sqrt(len);
-    const Point3 a = nodes[from];
-    Point3 b;
-    for (int k = 0; k < 3; ++k) {
-      dir[k] /= len;
-      b[k] = a[k] + 0.05 * dir[k];
-      if (std::abs(b[k]) > 2) dir[k] = -dir[k], b[k] = a[k] + 0.05 * dir[k];
-    }
-    nodes.push_back(b);
-    from = nodes.size() - 1;
-    const double r = 0.02 + 0.01 * (1 + u(rng));
-    es.push_back(gaussian_segment_element(a, b, r, r));
-  }
+  for (const bench::SkeletonSegment& s : bench::random_skeleton(n))
+    es.push_back(gaussian_segment_element(s.a, s.b, s.radius, s.radius));
   return es;
 }
 
