@@ -5,6 +5,7 @@
 
 #include "genmod/models/gallery.hpp"
 #include "genmod/models/implicit_gallery.hpp"
+#include "genmod/models/region_gallery.hpp"
 #include "genmod/models/trimmed_csg.hpp"
 
 #include <pybind11/stl.h>
@@ -34,12 +35,17 @@ void bind_gallery(py::module_& m) {
       out.append(py::make_tuple(model.name, "implicit", model.description, parameters(model.parameters), false));
     for (const models::CsgModel& model : models::csg_models())
       out.append(py::make_tuple(model.name, "csg", model.description, py::list(), false));
+    for (const models::RegionModel& model : models::region_models())
+      out.append(py::make_tuple(model.name, "regions", model.description, parameters(model.parameters), true));
     return out;
   });
   m.def("_build_model", [](const std::string& name, const models::ParameterValues& params) {
     if (models::is_csg_model(name))
       throw std::invalid_argument("CSG model '" + name +
                                   "' is a Boolean combination of trimmed surfaces, not one function: mesh it with gallery.mesh");
+    if (models::find_region_model(name))
+      throw std::invalid_argument("region model '" + name +
+                                  "' is several region functions, not one: mesh it with gallery.mesh");
     if (const models::ImplicitModel* implicit = models::find_implicit_model(name))
       return models::build_implicit_model(*implicit, params);
     return models::build_model(models::find_model(name), params);
@@ -62,6 +68,21 @@ void bind_gallery(py::module_& m) {
       info["curve_complete"] = r.curve_complete;
       info["seam_vertices"] = r.seam.size();
       mesh = r.mesh;
+    } else if (models::find_region_model(name)) {
+      // tolerance is the lattice's cube edge here (0: the model's default).
+      const models::RegionModelMesh r = [&] {
+        py::gil_scoped_release release;
+        return models::mesh_region_model(name, params, tolerance);
+      }();
+      py::dict sheets;
+      for (const auto& [a, b] : r.result.regions) {
+        const std::string key = r.region_names.at(static_cast<std::size_t>(a)) + " | " +
+                                r.region_names.at(static_cast<std::size_t>(b));
+        sheets[key.c_str()] = sheets.contains(key) ? sheets[key.c_str()].cast<std::size_t>() + 1 : std::size_t{1};
+      }
+      info["sheets"] = sheets;
+      info["limits_hit"] = r.result.stats.limits_hit;
+      mesh = r.result.mesh;
     } else if (const models::ImplicitModel* implicit = models::find_implicit_model(name)) {
       const Fn f = models::build_implicit_model(*implicit, params);
       ImplicitMeshSettings s;

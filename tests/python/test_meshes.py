@@ -37,6 +37,20 @@ def test_gallery_lists_and_meshes_the_csg_models():
         gallery.mesh("drilled_sphere", radius=0.2)
 
 
+def test_gallery_lists_and_meshes_the_region_models():
+    leaf = {m.name: m for m in gallery.models()}["maple_leaf"]
+    assert leaf.kind == "regions" and leaf.open and leaf.parameters[0].name == "vein_radius"
+    mesh, info = gallery.mesh("maple_leaf", tolerance=0.04, vein_radius=0.05)
+    assert set(info["sheets"]) == {"vein | beyond the blade", "vein | below", "vein | above", "below | above"}
+    assert sum(info["sheets"].values()) == len(mesh.triangles) and not info["limits_hit"]
+    report = mesh.validate()
+    assert not report["manifold"] and report["degenerate_triangles"] == 0  # the blade meets the veins
+    with pytest.raises(ValueError, match="not one"):
+        gallery.build("maple_leaf")
+    with pytest.raises(ValueError, match="vein_radius"):
+        gallery.mesh("maple_leaf", vein_radius=0.5)
+
+
 def test_implicit_mesh_is_valid_and_round_trips_through_a_file(tmp_path):
     x, y, z = gm.x(0), gm.x(1), gm.x(2)
     torus = (gm.sqrt(x ** 2 + y ** 2) - 1.0) ** 2 + z ** 2 - 0.09

@@ -24,7 +24,8 @@ class Model:
     """A gallery model: its name, kind, description, parameters and whether it is open."""
     name: str
     kind: str  # "parametric" (a surface or solid of x(0), x(1), x(2)), "implicit" (f < 0 inside)
-    # or "csg" (a Boolean combination of trimmed parametric surfaces; meshed, not built)
+    # "csg" (a Boolean combination of trimmed parametric surfaces; meshed, not built) or
+    # "regions" (several regions whose boundaries form a non-manifold surface; meshed, not built)
     description: str
     parameters: tuple
     open: bool  # its mesh has a boundary (a sheet, a fillet piece)
@@ -47,6 +48,8 @@ def mesh(name, tolerance=0.0, max_seconds=120.0, threads=0, **params):
     """Meshes the model: parametric models adaptively within `tolerance` (default 1e-3 of the
     model's size), implicit ones with the octree mesher, CSG models by Algorithm 5.4 with
     `tolerance` the sampling box width (default 0.05; `max_seconds` bounds their intersection
-    curve). Returns (Mesh, info)."""
+    curve), region models by the non-manifold polygonizer with `tolerance` the cube edge
+    (default the model's; info["sheets"] counts the triangles between each pair of regions).
+    Returns (Mesh, info)."""
     return _genmod._mesh_model(name, {k: float(v) for k, v in params.items()}, float(tolerance),
                                float(max_seconds), int(threads))
