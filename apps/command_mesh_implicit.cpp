@@ -71,22 +71,8 @@ int run_continuation(const Arguments& a, const std::string& path, const Fn& f, c
 }  // namespace
 
 int run_mesh_implicit(std::span<const std::string> args) {
-  // --param may repeat: take every occurrence out before the generic scanner sees the rest.
-  models::ParameterValues overrides;
   std::vector<std::string> rest;
-  for (std::size_t i = 0; i < args.size(); ++i) {
-    if (args[i] == "--param" || args[i] == "-p") {
-      if (i + 1 >= args.size()) throw UsageError("option " + args[i] + " needs a value");
-      const std::string& text = args[++i];
-      const std::size_t eq = text.find('=');
-      if (eq == std::string::npos || eq == 0) throw UsageError("--param expects NAME=VALUE, got '" + text + "'");
-      const std::string name = text.substr(0, eq);
-      if (overrides.count(name)) throw UsageError("--param " + name + " is given twice");
-      overrides[name] = parse_number("--param " + name, text.substr(eq + 1));
-    } else {
-      rest.push_back(args[i]);
-    }
-  }
+  const models::ParameterValues overrides = take_param_options(args, rest);
   static constexpr std::array<const char*, 3> kFlags{"--no-sharp", "--no-check", "--cubes"};
   static constexpr std::array<const char*, 12> kValued{"--box",       "--min-feature", "--tolerance",  "--max-cell",
                                                        "--max-seconds", "--threads",   "-o",           "--output",

@@ -1,6 +1,8 @@
 #include "genmod/solvers/contractor.hpp"
 
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace genmod {
 
@@ -24,9 +26,13 @@ Interval allowed(Relation rel, bool& any) {
 
 }  // namespace
 
-Hc4Contractor::Hc4Contractor(const ConstraintSystem& system) : sys_(&system) {
-  for (const ConstraintAtom& atom : system.atoms())
-    supported_.push_back(atom.tape.num_outputs() == 1 && TapeContractor::projects(atom.tape) ? 1 : 0);
+Hc4Contractor::Hc4Contractor(const ConstraintSystem& system) : sys_(&system) {}
+
+bool Hc4Contractor::supports(std::size_t atom) const {
+  if (atom >= sys_->atoms().size())
+    throw std::out_of_range("genmod: Hc4Contractor: atom " + std::to_string(atom) + " of " +
+                            std::to_string(sys_->atoms().size()));
+  return TapeContractor::projects(sys_->atoms()[atom].tape);
 }
 
 bool Hc4Contractor::contract(std::span<Interval> box, std::span<const Truth> values) {

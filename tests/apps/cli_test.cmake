@@ -250,7 +250,7 @@ elseif(CASE STREQUAL "mesh_implicit")
       message(FATAL_ERROR "genmod mesh ${name}: not valid:\n${out}")
     endif()
   endforeach()
-  expect_error(ARGS mesh blobby --param spacing=1 --param spacing=2 -o ${WORK}/b.obj NEEDLES "twice")
+  expect_error(ARGS mesh blobby --param spacing=1 --param spacing=2 -o ${WORK}/b.obj NEEDLES "spacing" "more than once")
   expect_error(ARGS mesh blobby --param radius=1 -o ${WORK}/b.obj NEEDLES "radius" "spacing")
 elseif(CASE STREQUAL "preview_and_check")
   # check: 0 on a valid mesh, 1 on a mesh with a hole or a malformed file, 2 on usage errors;

@@ -46,13 +46,13 @@ class Hc4Contractor {
 
   // Whether atom i gets the backward projection (TapeContractor::projects: its tape has no
   // select, is-error or custom call); every atom gets the forward check.
-  bool supports(std::size_t atom) const { return supported_.at(atom) != 0; }
+  // std::out_of_range for an atom index the system does not have.
+  bool supports(std::size_t atom) const;
 
  private:
   bool contract_node(std::uint32_t node, bool negated, std::span<Interval> box, std::span<const Truth> values);
 
   const ConstraintSystem* sys_;
-  std::vector<std::uint8_t> supported_;
   TapeContractor tape_;
 };
 
