@@ -5,7 +5,8 @@
 //
 // Example:
 //   using namespace genmod::models;
-//   RegionModelMesh m = mesh_region_model("maple_leaf", {{"vein_radius", 0.05}});
+//   // a coarse lattice (cube edge 0.1) for a quick look; 0 takes the model's default
+//   RegionModelMesh m = mesh_region_model("maple_leaf", {{"vein_radius", 0.05}}, 0.1);
 //   // m.result.mesh: triangles; m.result.regions: the two regions each one separates
 #pragma once
 
