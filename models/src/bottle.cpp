@@ -128,6 +128,7 @@ Model bottle_model() {
     return concat(1, v, {neck, shoulders, body, bottom});
   };
   m.periodic_u = true;
+  m.open = true;  // a surface open at the mouth of the nozzle, as in the thesis
   return m;
 }
 

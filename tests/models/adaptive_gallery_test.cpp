@@ -22,10 +22,8 @@ namespace {
 // the offset's enclosure is unbounded in places (offset_plate, whose caps then cannot be
 // glued to unrefined walls), hairs that enter the scalp (furry_bear: several closed
 // surfaces that overlap need CSG), and operators whose interval enclosures are too slow or
-// loose for refinement in a test's time (bottle, spoon, cross_section_matching,
-// time_varying_curve).
-const std::set<std::string> kKnownDefects{"offset_plate", "furry_bear", "bottle", "spoon",
-                                          "cross_section_matching", "time_varying_curve"};
+// loose for refinement in a test's time (spoon, cross_section_matching).
+const std::set<std::string> kKnownDefects{"offset_plate", "furry_bear", "spoon", "cross_section_matching"};
 
 class AdaptiveGallery : public ::testing::TestWithParam<std::string> {};
 

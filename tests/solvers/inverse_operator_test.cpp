@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -80,6 +81,73 @@ TEST(InverseOperator, InclusionContainsSampledValues) {
     }
     // Not much wider than the true range (certified solver boxes may be wider than it).
     EXPECT_LE(y.width(), 1.5 * (at(r, {0.0, b}) - at(r, {0.0, a})) + 0.03);
+  }
+}
+
+// Every way to enclose: a monotone F whose invert depends on a parameter (a search in t per
+// box), one whose invert depends on t alone (its roots at the ends of match's range), and a
+// non-monotone one, (t - 0.5)^2 = x1, with two roots (the constraint solver). Every
+// root of every sampled parameter value lies in the inclusion over the parameter box.
+TEST(InverseOperator, InclusionHoldsEveryRootMonotoneOrNot) {
+  const Fn t = x(0);
+  struct Case {
+    Fn r;
+    std::function<std::vector<double>(double, double)> roots;  // of F for x1, x2
+  };
+  const std::vector<Case> cases{
+      // t^3 + x2 t = x1, x2 in [0.5, 2]: increasing in t.
+      {inverse(t * t * t + x(2) * t, x(1), 0),
+       [](double m, double k) {
+         double lo = 0.0, hi = 1.0;  // bisection on the increasing cubic
+         if (lo * lo * lo + k * lo > m || hi * hi * hi + k * hi < m) return std::vector<double>{};
+         for (int i = 0; i < 200; ++i) {
+           const double mid = 0.5 * (lo + hi);
+           (mid * mid * mid + k * mid < m ? lo : hi) = mid;
+         }
+         return std::vector<double>{lo};
+       }},
+      // 1 - x2 t = x1: decreasing in t.
+      {inverse(1.0 - x(2) * t, x(1), 0),
+       [](double m, double k) {
+         const double r = (1.0 - m) / k;
+         return r >= 0.0 && r <= 1.0 ? std::vector<double>{r} : std::vector<double>{};
+       }},
+      // exp(-t) = x1: decreasing in t alone (invert found monotone once, when built).
+      {inverse(exp(-t), x(1), 0),
+       [](double m, double) {
+         const double r = -std::log(m);
+         return m > 0.0 && r >= 0.0 && r <= 1.0 ? std::vector<double>{r} : std::vector<double>{};
+       }},
+      // (t - 0.5)^2 = x1 (x2 unused): two roots, not monotone.
+      {inverse(square(t - 0.5) + 0.0 * x(2), x(1), 0),
+       [](double m, double) {
+         return m >= 0.0 && m <= 0.25 ? std::vector<double>{0.5 - std::sqrt(m), 0.5 + std::sqrt(m)}
+                                      : std::vector<double>{};
+       }},
+  };
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> um(-0.1, 1.3), uk(0.5, 2.0);
+  IntervalEvaluator iv;
+  for (std::size_t c = 0; c < cases.size(); ++c) {
+    const Tape tape(cases[c].r, std::vector<int>{1, 2});
+    for (int i = 0; i < 60; ++i) {
+      double m0 = um(rng), m1 = um(rng), k0 = uk(rng), k1 = uk(rng);
+      if (m0 > m1) std::swap(m0, m1);
+      if (k0 > k1) std::swap(k0, k1);
+      if (i % 3 == 0) m1 = m0 + 1e-3 * (m1 - m0);  // narrow boxes too
+      const Interval y = iv.eval(tape, {Interval(m0, m1), Interval(k0, k1)})[0];
+      for (int s = 0; s <= 12; ++s)
+        for (int q = 0; q <= 4; ++q) {
+          const double m = m0 + (m1 - m0) * s / 12.0, k = k0 + (k1 - k0) * q / 4.0;
+          for (double root : cases[c].roots(m, k))
+            EXPECT_TRUE(y.contains(root)) << "case " << c << ": " << y << " misses the root " << root << " at x1 = " << m
+                                          << ", x2 = " << k;
+          const double v = at(cases[c].r, {0.0, m, k});
+          if (!std::isnan(v)) {
+            EXPECT_TRUE(y.contains(v)) << "case " << c << ": misses the point value " << v;
+          }
+        }
+    }
   }
 }
 

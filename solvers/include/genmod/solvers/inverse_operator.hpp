@@ -17,10 +17,15 @@
 // the method visits, the result is NaN (GENMOD's error condition). The result is a root of F to
 // within `epsilon` (the final bracket width).
 //
-// Inclusion over a box P of the free coordinates: the constraint solver (no solution is ever
-// lost) solves F = 0 for t in the domain with the free coordinates as interval parameters; the
-// result is the hull of its boxes widened by `epsilon` and clipped to the domain. It holds
-// every root of F in the domain for every parameter value in P, hence every point value.
+// Inclusion over a box P of the free coordinates. When dF/dt excludes 0 on domain x P (F
+// strictly monotone in t, the usual case of a schedule), bisection with interval evaluations
+// at single values of t finds a t below every root and one above it, for every parameter
+// value in P (about 2 log2(domain width / epsilon') evaluations of invert, match enclosed once
+// over P). Otherwise the constraint solver (no solution is ever lost) solves F = 0 for t in the
+// domain with the free coordinates as interval parameters, and the result is the hull of its
+// boxes. Either way epsilon' = max(epsilon, 0.01 width(P)), and the result is widened by the
+// point value's tolerance and clipped to the domain: it holds every root of F in the domain
+// for every parameter value in P, hence every point value.
 // Errors: empty + kCertainError when F has no root for any parameter value; kMaybeError
 // unless F(domain.lo) and F(domain.hi) have strictly opposite signs over all of P and F cannot
 // fail on domain x P (then every point of P is bracketed). Unbounded arguments give the domain
