@@ -20,9 +20,11 @@
 // every seed share one set of cached branches.
 //
 // Level of detail (camera.hpp): the tree declares uses_lod and a bounding box, and draws
-// clamp(levels + lod, 1, 10) levels, so lod 0 (no camera) is the tree its parameters say, each
-// lod below drops the finest order of branches (half of them), and lod -4 of the default tree
-// is its trunk alone. Every level is closed, as every tree is. The box is the trunk's plus a cube
+// the branches of the first clamp(levels + lod, 1, 10) orders, so lod 0 (no camera) is the tree
+// its parameters say, each lod below drops the finest order of branches (half of them), and
+// lod -4 of the default tree is its trunk alone. A coarser tree is a subset of the finer one:
+// the turtle still reads the whole string (and draws the same random numbers), skipping the
+// branches beyond the level. Every level is closed, as every tree is. The box is the trunk's plus a cube
 // about the trunk's tip reaching as far as branches of 10 levels could (the path's branches and
 // gaps end to end, plus the trunk's radius), so it holds the tree at every lod and every seed.
 //
@@ -131,7 +133,11 @@ std::array<Vec3, 2> tree_bounds(const Arguments& a) {
 
 PolyMesh build_tree(const Arguments& a, const CallContext& context) {
   const TreeShape shape = tree_shape(a);
-  const int levels = std::clamp(shape.levels + context.lod(), 1, kMaxTreeLevels);
+  // The turtle walks the string of at least the parameters' levels and draws the branches of
+  // the first `drawn` orders: the random draws are the same as the full tree's, so a coarser
+  // tree is the full tree without its finest orders (no branch moves between lods).
+  const int drawn = std::clamp(shape.levels + context.lod(), 1, kMaxTreeLevels);
+  const int levels = std::max(shape.levels, drawn);
   const double angle = shape.angle, length_ratio = shape.length_ratio, radius_ratio = shape.radius_ratio;
   const double trunk_length = shape.trunk_length, trunk_radius = shape.trunk_radius, jitter = shape.jitter;
   const int sides = shape.sides;
@@ -152,6 +158,10 @@ PolyMesh build_tree(const Arguments& a, const CallContext& context) {
         const double len = trunk_length * std::pow(length_ratio, t.order);
         const double r = trunk_radius * std::pow(radius_ratio, t.order);
         if (t.order > 0) t.frame = t.frame * Affine::translation(Vec3(0, clearance * r, 0));
+        if (t.order >= drawn) {  // below the level of detail: its children are too
+          ++t.order;
+          break;
+        }
         // Seed 0 for every branch: a branch draws no random numbers, so trees of any seed share
         // the cached branches.
         CallOptions fixed;
