@@ -22,6 +22,16 @@
 // are outside one of the five planes (near, left, right, bottom, top; there is no far plane),
 // so a box is never culled while part of it is in view, but a box just beyond a frustum edge
 // may be kept.
+//
+// Example:
+//   using namespace genmod;
+//   Camera camera;
+//   camera.position = Vec3(0, 0, 10);  // looking down -z at the origin, 640 x 480 pixels
+//   const std::array<Vec3, 2> box{Vec3(-1, -1, -1), Vec3(1, 1, 1)};
+//   const BoxView near = view_of_box(camera, box);                                        // lod -2
+//   const BoxView far = view_of_box(camera, box, Affine::translation(Vec3(0, 0, -90)));   // lod -5
+//   const BoxView behind = view_of_box(camera, box, Affine::translation(Vec3(0, 0, 20)));
+//   if (!near.visible || !far.visible || behind.visible || !(far.lod < near.lod)) throw std::runtime_error("lod");
 #pragma once
 
 #include "genmod/procedural/affine.hpp"

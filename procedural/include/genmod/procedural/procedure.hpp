@@ -58,7 +58,7 @@ struct Context {
   std::int64_t seed = 0;
   Affine transform;
   int lod = 0;  // a refinement offset: 0 = as the parameters say, below 0 coarser (camera.hpp)
-  std::optional<Camera> camera;  // none: no culling, the lod as given
+  std::optional<Camera> camera = std::nullopt;  // none: no culling, the lod as given
 };
 
 // Per-call overrides of the inherited context.
