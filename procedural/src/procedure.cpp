@@ -200,6 +200,10 @@ std::optional<Context> ProcedureRegistry::in_view(const Entry& e, const Argument
   for (int axis = 0; axis < 3; ++axis)
     if (!(std::isfinite(box[0][axis]) && std::isfinite(box[1][axis]) && box[0][axis] <= box[1][axis]))
       refuse("call", e.spec.name, "the bounds are not a finite box (lo <= hi)");
+  // A non-finite placement would put the box nowhere, and the frustum test would cull it.
+  for (const auto& row : context.transform.m)
+    for (double x : row)
+      if (!std::isfinite(x)) refuse("call", e.spec.name, "the context transform is not finite");
   const BoxView view = view_of_box(*context.camera, box, context.transform);
   if (!view.visible) {
     e.culled->fetch_add(1);

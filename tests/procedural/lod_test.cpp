@@ -269,6 +269,11 @@ TEST(LevelOfDetail, BadBoundsAreRefused) {
   r.add(s);
   EXPECT_NE(refusal([&] { r.call("Inverted", {}, with(looking_at_origin(5))); }).find("bounds"), std::string::npos);
   EXPECT_EQ(refusal([&] { r.call("Inverted"); }), "");  // no camera: the bounds are not read
+  // A non-finite placement is refused rather than culled.
+  register_lodded(r);
+  Affine nowhere = Affine::translation(Vec3(std::numeric_limits<double>::quiet_NaN(), 0, 0));
+  EXPECT_NE(refusal([&] { r.call("Lodded", {}, with(looking_at_origin(5), nowhere)); }).find("transform"), std::string::npos);
+  EXPECT_EQ(r.culled_calls("Lodded"), 0u);
 }
 
 // Calls with cameras from several threads: the culled counter and the cache agree with a

@@ -15,8 +15,9 @@
 // the cache, and culled_calls counts it. Otherwise the camera's level (view_of_box) replaces
 // the context's lod for this call and its callees. Without a camera, or without bounds, the lod
 // is the inherited one (0 unless a caller set it). A camera is checked (check_camera) by every
-// call that carries one. The camera itself is not in the cache key: only the lod it chose is,
-// for procedures with uses_lod.
+// call that carries one; bounds that are not a finite box (lo <= hi) and a non-finite transform
+// are refused when a camera reads them. The camera itself is not in the cache key: only the lod
+// it chose is, for procedures with uses_lod.
 //
 // Threads: register every procedure before calling from several threads; calls (and the cache
 // queries / switches) are then safe from any number of threads (e.g. TBB tasks).
