@@ -132,6 +132,8 @@ const Command kMeshCommand{
     "procedural models (see `genmod list`; the procedure's polygons, triangulated as built):\n"
     "  -p, --param K=V  a procedure parameter: a number, an integer or true/false as declared\n"
     "  --seed S         the random seed of the call (default 0)\n"
+    "  --lod L          level of detail, a refinement offset (default 0 = as the parameters say; below 0\n"
+    "                 coarser: the tree has levels + L levels, the human subdivisions + L; others ignore it)\n"
     "  --no-check       skip the validity report (exit status 1 when the mesh is not valid)\n"
     "implicit models (MODEL.vm or an implicit gallery name; the mesh bounds the solid f < 0 in the box):\n"
     "  --box x0,y0,z0,x1,y1,z1  region to mesh (default: the model's box, or -1,-1,-1,1,1,1)\n"

@@ -1,4 +1,4 @@
-// genmod mesh NAME [--param K=V ...] [--seed S] -o FILE: a procedural model (Morkel's registered
+// genmod mesh NAME [--param K=V ...] [--seed S] [--lod L] -o FILE: a procedural model (Morkel's registered
 // procedures, procedural_models.hpp) as the triangulation of the polygon mesh it builds.
 #include "arguments.hpp"
 #include "commands.hpp"
@@ -70,7 +70,7 @@ int run_mesh_procedural(std::span<const std::string> args) {
     }
   }
   static constexpr std::array<const char*, 1> kFlags{"--no-check"};
-  static constexpr std::array<const char*, 3> kValued{"-o", "--output", "--seed"};
+  static constexpr std::array<const char*, 4> kValued{"-o", "--output", "--seed", "--lod"};
   const Arguments a(rest, kFlags, kValued);
   if (a.positional().size() != 1)
     throw UsageError("expected one model name, got " + std::to_string(a.positional().size()));
@@ -84,6 +84,15 @@ int run_mesh_procedural(std::span<const std::string> args) {
     if (text->empty() || end != text->c_str() + text->size() || errno == ERANGE)
       throw UsageError("--seed: '" + *text + "' is not an integer");
   }
+  int lod = 0;
+  if (const auto text = a.value({"--lod"})) {
+    char* end = nullptr;
+    errno = 0;
+    const long v = std::strtol(text->c_str(), &end, 10);
+    if (text->empty() || end != text->c_str() + text->size() || errno == ERANGE || v < -64 || v > 64)
+      throw UsageError("--lod: '" + *text + "' is not an integer in -64..64");
+    lod = static_cast<int>(v);
+  }
   check_writable(output);
 
   const ProcedureSpec& spec = models::procedural_registry().spec(name);
@@ -92,14 +101,16 @@ int run_mesh_procedural(std::span<const std::string> args) {
   const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
   try {
-    mesh = models::mesh_procedural_model(name, named, seed);
+    mesh = models::mesh_procedural_model(name, named, seed, lod);
   } catch (const std::invalid_argument& e) {
     throw UsageError(e.what());  // unknown parameter, wrong type, value out of range
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_mesh(mesh, output);
-  std::printf("%s (procedural, seed %lld): %zu vertices, %zu triangles in %.3f s -> %s\n", name.c_str(),
-              static_cast<long long>(seed), mesh.vertices.size(), mesh.triangles.size(), seconds, output.c_str());
+  const std::string lod_note = lod != 0 ? ", lod " + std::to_string(lod) : "";
+  std::printf("%s (procedural, seed %lld%s): %zu vertices, %zu triangles in %.3f s -> %s\n", name.c_str(),
+              static_cast<long long>(seed), lod_note.c_str(), mesh.vertices.size(), mesh.triangles.size(), seconds,
+              output.c_str());
   if (a.has("--no-check")) return 0;
   // The file as written is what users get: check that, not the mesh in memory.
   const MeshValidity v = validate(read_mesh(output));

@@ -63,7 +63,7 @@ void bind_procedural(py::module_& m) {
     }
     return out;
   });
-  m.def("_mesh_procedural", [](const std::string& name, const py::dict& args, std::int64_t seed) {
+  m.def("_mesh_procedural", [](const std::string& name, const py::dict& args, std::int64_t seed, int lod) {
     if (models::find_procedural_model(name) == nullptr)
       throw std::invalid_argument("genmod.procedural: no procedural model named '" + name + "'");
     NamedArgs named;
@@ -72,8 +72,8 @@ void bind_procedural(py::module_& m) {
       named.emplace_back(k, param_from_python(name, k, value));
     }
     py::gil_scoped_release unlocked;
-    return models::mesh_procedural_model(name, named, seed);
-  }, py::arg("name"), py::arg("args"), py::arg("seed"));
+    return models::mesh_procedural_model(name, named, seed, lod);
+  }, py::arg("name"), py::arg("args"), py::arg("seed"), py::arg("lod") = 0);
   m.def("_procedural_cache", [](const std::string& name) {
     const CacheStats s = models::procedural_registry().cache_stats(name);
     py::dict d;

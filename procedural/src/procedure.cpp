@@ -140,7 +140,12 @@ std::string ProcedureRegistry::cache_key(const Entry& e, const Arguments& args, 
 PolyMesh ProcedureRegistry::call(std::string_view name, const NamedArgs& args, const Context& context) const {
   const Entry& e = entry(name);
   if (e.spec.mode != Mode::Out) refuse("call", e.spec.name, "an InOut procedure needs a model (call_inout)");
-  if (!e.spec.cacheable || !caching()) return e.spec.out_body(resolve(name, args), CallContext(*this, context));
+  if (!e.spec.cacheable || !caching()) {
+    Arguments resolved = resolve(name, args);
+    const std::optional<Context> seen = in_view(e, resolved, context);
+    if (!seen) return PolyMesh();
+    return e.spec.out_body(resolved, CallContext(*this, *seen));
+  }
   return *call_shared(name, args, context);  // a deep copy (OpenMesh copies properties)
 }
 
@@ -149,11 +154,13 @@ std::shared_ptr<const PolyMesh> ProcedureRegistry::call_shared(std::string_view 
   const Entry& e = entry(name);
   if (e.spec.mode != Mode::Out) refuse("call", e.spec.name, "an InOut procedure needs a model (call_inout)");
   Arguments resolved = resolve(name, args);
-  CallContext inner(*this, context);
+  const std::optional<Context> seen = in_view(e, resolved, context);
+  if (!seen) return std::make_shared<const PolyMesh>();
+  CallContext inner(*this, *seen);
   // `new PolyMesh(body())` and not make_shared: PolyMesh has no move constructor, and only a
   // prvalue initialising the object directly is not a whole-mesh copy (guaranteed elision).
   if (!e.spec.cacheable || !caching()) return std::shared_ptr<const PolyMesh>(new PolyMesh(e.spec.out_body(resolved, inner)));
-  std::string key = cache_key(e, resolved, context, nullptr);
+  std::string key = cache_key(e, resolved, *seen, nullptr);
   if (auto hit = e.cache->find(key)) return hit;
   std::shared_ptr<const PolyMesh> built(new PolyMesh(e.spec.out_body(resolved, inner)));
   e.cache->insert(key, built);
@@ -165,12 +172,14 @@ void ProcedureRegistry::call_inout(std::string_view name, PolyMesh& model, const
   const Entry& e = entry(name);
   if (e.spec.mode != Mode::InOut) refuse("call", e.spec.name, "an Out procedure takes no model (call)");
   Arguments resolved = resolve(name, args);
-  CallContext inner(*this, context);
+  const std::optional<Context> seen = in_view(e, resolved, context);
+  if (!seen) return;  // culled: the model stays as it was
+  CallContext inner(*this, *seen);
   if (!e.spec.cacheable || !caching()) {
     e.spec.inout_body(model, resolved, inner);
     return;
   }
-  std::string key = cache_key(e, resolved, context, &model);
+  std::string key = cache_key(e, resolved, *seen, &model);
   if (auto hit = e.cache->find(key)) {
     model = *hit;
     return;
@@ -178,6 +187,33 @@ void ProcedureRegistry::call_inout(std::string_view name, PolyMesh& model, const
   e.spec.inout_body(model, resolved, inner);
   e.cache->insert(key, std::make_shared<const PolyMesh>(model));
 }
+
+std::optional<Context> ProcedureRegistry::in_view(const Entry& e, const Arguments& args, Context context) const {
+  if (!context.camera) return context;
+  try {
+    check_camera(*context.camera);
+  } catch (const std::invalid_argument& error) {
+    refuse("call", e.spec.name, error.what());
+  }
+  if (!e.spec.bounds) return context;
+  const std::array<Vec3, 2> box = (*e.spec.bounds)(args);
+  for (int axis = 0; axis < 3; ++axis)
+    if (!(std::isfinite(box[0][axis]) && std::isfinite(box[1][axis]) && box[0][axis] <= box[1][axis]))
+      refuse("call", e.spec.name, "the bounds are not a finite box (lo <= hi)");
+  // A non-finite placement would put the box nowhere, and the frustum test would cull it.
+  for (const auto& row : context.transform.m)
+    for (double x : row)
+      if (!std::isfinite(x)) refuse("call", e.spec.name, "the context transform is not finite");
+  const BoxView view = view_of_box(*context.camera, box, context.transform);
+  if (!view.visible) {
+    e.culled->fetch_add(1);
+    return std::nullopt;
+  }
+  context.lod = view.lod;
+  return context;
+}
+
+std::uint64_t ProcedureRegistry::culled_calls(std::string_view name) const { return entry(name).culled->load(); }
 
 CacheStats ProcedureRegistry::cache_stats(std::string_view name) const { return entry(name).cache->stats(); }
 void ProcedureRegistry::reset_cache_stats(std::string_view name) const { entry(name).cache->reset_stats(); }
@@ -193,6 +229,7 @@ Context overridden(Context c, const CallOptions& o) {
   if (o.seed) c.seed = *o.seed;
   if (o.lod) c.lod = *o.lod;
   if (o.transform) c.transform = *o.transform;
+  if (o.camera) c.camera = *o.camera;
   return c;
 }
 }  // namespace

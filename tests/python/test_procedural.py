@@ -29,6 +29,16 @@ def test_models_mesh_valid_and_reproducibly():
     assert taller > procedural.mesh("chair", backLength=2.0).vertices[:, 2].max()
 
 
+def test_a_lower_level_of_detail_is_coarser_and_still_valid():
+    # The tree drops one order of branches per level (7 branches at levels 5 + lod -2), the human
+    # one subdivision level; lod 0 is the default mesh.
+    tree = procedural.mesh("tree", lod=-2)
+    assert len(tree.triangles) == 7 * 44 and tree.validate()["valid"]
+    assert procedural.mesh("tree", lod=0).triangles.tobytes() == procedural.mesh("tree").triangles.tobytes()
+    coarse, fine = procedural.mesh("human", lod=-1), procedural.mesh("human")
+    assert len(coarse.triangles) < len(fine.triangles) and coarse.validate()["valid"]
+
+
 def test_the_luggage_builds_its_leg_once():
     procedural.set_caching(True)
     procedural.clear_caches()

@@ -60,10 +60,12 @@ def models():
             for name, doc, sig, params, cacheable in _genmod._procedural_models()]
 
 
-def mesh(name, seed=0, **params):
+def mesh(name, seed=0, lod=0, **params):
     """The model's triangle mesh (z up) with the given parameters (the others keep their
-    defaults). ValueError names the procedure and the parameter of a bad value."""
-    return _genmod._mesh_procedural(name, params, int(seed))
+    defaults). lod is the level of detail, a refinement offset: 0 as the parameters say, below 0
+    coarser for the models that use it (the tree drops branch orders, the human subdivision
+    levels). ValueError names the procedure and the parameter of a bad value."""
+    return _genmod._mesh_procedural(name, params, int(seed), int(lod))
 
 
 def cache_stats(name):

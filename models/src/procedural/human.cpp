@@ -15,25 +15,44 @@
 // tummy and butt are lengths in metres added to the torso curves' belly and buttocks control
 // points, as in the listing; gender is not a parameter (the listing declares it unused).
 // Every length is a multiple of the head unit, so two heights give the same mesh scaled.
+//
+// Level of detail (camera.hpp): the human declares uses_lod and a bounding box, and gives its
+// limbs and head clamp(subdivisions + lod, 0, 4) sqrt(2) levels, so lod 0 (no camera) is the
+// figure its parameters say and each lod below is one subdivision level fewer. The box, in
+// head units H: x in [-5, 5] H (the arms' tips are about 4 H out), y in [-0.5, 9] H (soles at
+// 0, the top of the head near 8.4 H), z in [-2, 2] H (torso, belly and feet within 1.6 H);
+// tummy and butt add up to the torso's depth in z.
 #include "body_tools.hpp"
 #include "procedural_model_defs.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 
 namespace genmod::models::detail {
 namespace {
 
+// The head unit in metres (height in feet, checked).
+double head_unit(const Arguments& a) {
+  const double height = positive_real(a, "human", "height");
+  if (!(height <= 100.0)) refuse_parameter("human", "height", "must be at most 100 (feet)");
+  return height * 30.48 / 100.0 / 8.0;
+}
+
+std::array<Vec3, 2> human_bounds(const Arguments& a) {
+  const double H = head_unit(a), depth = 2.0 * H + 2.0 * (29.0 / 23.0) * H;  // tummy, butt <= the torso's depth
+  return {Vec3(-5.0 * H, -0.5 * H, -depth), Vec3(5.0 * H, 9.0 * H, depth)};
+}
+
 PolyMesh build_human(const Arguments& a, const CallContext& context) {
   const char* P = "human";
-  const double height = positive_real(a, P, "height");
-  if (!(height <= 100.0)) refuse_parameter(P, "height", "must be at most 100 (feet)");
-  const double m = height * 30.48 / 100.0, H = m / 8.0;
+  const double H = head_unit(a);
   const double torso_h = (61.5 / 23.0) * H, torso_l = (40.0 / 23.0) * H, torso_w = (29.0 / 23.0) * H;
   const double tummy = real_in(a, P, "tummy", -0.1 * torso_w, torso_w);
   const double butt = real_in(a, P, "butt", -0.1 * torso_w, torso_w);
   const bool cubical = a.boolean("cubical");
-  const int levels = integer_in(a, P, "subdivisions", 0, 4);
+  const int levels = std::clamp(integer_in(a, P, "subdivisions", 0, 4) + context.lod(), 0, 4);
 
   const double leg_h = 4.0 * H, hip_gap = 0.08 * H, shoulder_gap = 0.1 * H, neck_gap = 0.08 * H;
   Workpiece w;
@@ -103,6 +122,8 @@ ProceduralModelDef human_definition() {
   spec.mode = Mode::Out;
   spec.params = {param("height", 6.0), param("tummy", 0.0), param("butt", 0.0), param("cubical", true),
                  param("subdivisions", 2)};
+  spec.uses_lod = true;
+  spec.bounds = human_bounds;
   spec.out_body = build_human;
   ProceduralModel info{
       "human",
@@ -112,7 +133,7 @@ ProceduralModelDef human_definition() {
        {"tummy", "belly forward, in metres (-0.1..1 of the torso's depth)"},
        {"butt", "buttocks back, in metres (-0.1..1 of the torso's depth)"},
        {"cubical", "the extruded torso (true) or the egg torso of the base-shape experiment (false)"},
-       {"subdivisions", "sqrt(2) levels of the limbs and head, 0-4"}}};
+       {"subdivisions", "sqrt(2) levels of the limbs and head, 0-4; the lod adds to it (camera.hpp)"}}};
   return {std::move(spec), std::move(info)};
 }
 

@@ -69,9 +69,10 @@ ProcedureRegistry& procedural_registry() {
   return registry;
 }
 
-Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args, std::int64_t seed) {
+Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args, std::int64_t seed, int lod) {
   Context context;
   context.seed = seed;
+  context.lod = lod;
   PolyMesh mesh = procedural_registry().call(name, args, context);
   // y up -> z up: (x, y, z) -> (x, -z, y), a rotation (orientation kept).
   Affine to_z_up;

@@ -19,6 +19,15 @@
 // placement does. The branch calls pass seed 0 (a branch draws no random numbers), so trees of
 // every seed share one set of cached branches.
 //
+// Level of detail (camera.hpp): the tree declares uses_lod and a bounding box, and draws
+// the branches of the first clamp(levels + lod, 1, 10) orders, so lod 0 (no camera) is the tree
+// its parameters say, each lod below drops the finest order of branches (half of them), and
+// lod -4 of the default tree is its trunk alone. A coarser tree is a subset of the finer one:
+// the turtle still reads the whole string (and draws the same random numbers), skipping the
+// branches beyond the level. Every level is closed, as every tree is. The box is the trunk's plus a cube
+// about the trunk's tip reaching as far as branches of 10 levels could (the path's branches and
+// gaps end to end, plus the trunk's radius), so it holds the tree at every lod and every seed.
+//
 // The branches are separate closed components (the mesh as a whole is closed, 2-manifold and
 // free of self-intersections): a child starts a gap beyond its parent's tip along its own
 // heading, 1.3 child radii / sin(the smallest pitch) long, enough to clear the parent's top
@@ -28,6 +37,8 @@
 
 #include "genmod/procedural/rng.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -83,16 +94,53 @@ Affine about(int axis, double radians) {
   return r;
 }
 
-PolyMesh build_tree(const Arguments& a, const CallContext& context) {
+constexpr int kMaxTreeLevels = 10;
+
+// The tree's parameters, checked (the bounds and the body both read them).
+struct TreeShape {
+  int levels, sides;
+  double angle, length_ratio, radius_ratio, trunk_length, trunk_radius, jitter;
+  // The gap before a child, in child radii (see the file comment).
+  double clearance() const { return 1.3 / std::sin(angle * (1.0 - jitter)); }
+};
+
+TreeShape tree_shape(const Arguments& a) {
   const char* P = "tree";
-  const int levels = integer_in(a, P, "levels", 1, 10);
-  const double angle = real_in(a, P, "angle", 5.0, 80.0) * std::numbers::pi / 180.0;
-  const double length_ratio = real_in(a, P, "lengthRatio", 0.1, 0.8);
-  const double radius_ratio = real_in(a, P, "radiusRatio", 0.1, 1.0);
-  const double trunk_length = positive_real(a, P, "trunkLength"), trunk_radius = positive_real(a, P, "trunkRadius");
-  const int sides = integer_in(a, P, "sides", 3, 64);
-  const double jitter = real_in(a, P, "jitter", 0.0, 0.5);
-  if (!(trunk_radius <= 0.2 * trunk_length)) refuse_parameter(P, "trunkRadius", "must be at most 0.2 trunkLength");
+  TreeShape t;
+  t.levels = integer_in(a, P, "levels", 1, kMaxTreeLevels);
+  t.angle = real_in(a, P, "angle", 5.0, 80.0) * std::numbers::pi / 180.0;
+  t.length_ratio = real_in(a, P, "lengthRatio", 0.1, 0.8);
+  t.radius_ratio = real_in(a, P, "radiusRatio", 0.1, 1.0);
+  t.trunk_length = positive_real(a, P, "trunkLength");
+  t.trunk_radius = positive_real(a, P, "trunkRadius");
+  t.sides = integer_in(a, P, "sides", 3, 64);
+  t.jitter = real_in(a, P, "jitter", 0.0, 0.5);
+  if (!(t.trunk_radius <= 0.2 * t.trunk_length)) refuse_parameter(P, "trunkRadius", "must be at most 0.2 trunkLength");
+  return t;
+}
+
+std::array<Vec3, 2> tree_bounds(const Arguments& a) {
+  const TreeShape t = tree_shape(a);
+  // Every point beyond the trunk is within `reach` of the trunk's tip: each later order adds at
+  // most its gap and its length along the path, and a branch's surface is within its radius
+  // (at most the trunk's: radiusRatio <= 1) of its axis.
+  double reach = t.trunk_radius;
+  for (int d = 1; d < kMaxTreeLevels; ++d)
+    reach += t.clearance() * t.trunk_radius * std::pow(t.radius_ratio, d) + t.trunk_length * std::pow(t.length_ratio, d);
+  const double r = std::max(reach, t.trunk_radius), tip = t.trunk_length;
+  return {Vec3(-r, std::min(0.0, tip - r), -r), Vec3(r, tip + r, r)};
+}
+
+PolyMesh build_tree(const Arguments& a, const CallContext& context) {
+  const TreeShape shape = tree_shape(a);
+  // The turtle walks the string of at least the parameters' levels and draws the branches of
+  // the first `drawn` orders: the random draws are the same as the full tree's, so a coarser
+  // tree is the full tree without its finest orders (no branch moves between lods).
+  const int drawn = std::clamp(shape.levels + context.lod(), 1, kMaxTreeLevels);
+  const int levels = std::max(shape.levels, drawn);
+  const double angle = shape.angle, length_ratio = shape.length_ratio, radius_ratio = shape.radius_ratio;
+  const double trunk_length = shape.trunk_length, trunk_radius = shape.trunk_radius, jitter = shape.jitter;
+  const int sides = shape.sides;
 
   struct Turtle {
     Affine frame;  // rotation + position: the branch frame (heading = local +y)
@@ -100,7 +148,7 @@ PolyMesh build_tree(const Arguments& a, const CallContext& context) {
   };
   Rng rng(context.seed());
   const auto jittered = [&](double v) { return v * (1.0 + jitter * (2.0 * rng.next_double() - 1.0)); };
-  const double clearance = 1.3 / std::sin(angle * (1.0 - jitter));
+  const double clearance = shape.clearance();
   PolyMesh tree;
   Turtle t;
   std::vector<Turtle> stack;
@@ -110,6 +158,10 @@ PolyMesh build_tree(const Arguments& a, const CallContext& context) {
         const double len = trunk_length * std::pow(length_ratio, t.order);
         const double r = trunk_radius * std::pow(radius_ratio, t.order);
         if (t.order > 0) t.frame = t.frame * Affine::translation(Vec3(0, clearance * r, 0));
+        if (t.order >= drawn) {  // below the level of detail: its children are too
+          ++t.order;
+          break;
+        }
         // Seed 0 for every branch: a branch draws no random numbers, so trees of any seed share
         // the cached branches.
         CallOptions fixed;
@@ -159,12 +211,14 @@ ProceduralModelDef tree_definition() {
   spec.params = {param("levels", 5),         param("angle", 30.0),       param("lengthRatio", 0.7),
                  param("radiusRatio", 0.6),  param("trunkLength", 1.0),  param("trunkRadius", 0.06),
                  param("sides", 8),          param("jitter", 0.15)};
+  spec.uses_lod = true;
+  spec.bounds = tree_bounds;
   spec.out_body = build_tree;
   ProceduralModel info{
       "tree",
       "an L-system tree (A -> F/[+A][-A]), cacheable, its 2^levels - 1 branches cached `branch` calls; the seed "
       "jitters the angles",
-      {{"levels", "rewriting steps, 1-10 (the thesis shows 3-6)"},
+      {{"levels", "rewriting steps, 1-10 (the thesis shows 3-6); the lod adds to it (camera.hpp)"},
        {"angle", "branching (pitch) angle in degrees, 5-80"},
        {"lengthRatio", "a child's length / its parent's, 0.1-0.8"},
        {"radiusRatio", "a child's radius / its parent's (and each branch's taper), 0.1-1"},

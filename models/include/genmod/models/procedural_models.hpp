@@ -42,6 +42,11 @@
 //            order (levels misses per tree). Branches are separate closed components a small
 //            gap apart (no overlaps).
 //
+// Level of detail (camera.hpp): the tree (levels + lod levels) and the human (subdivisions +
+// lod sqrt(2) levels) read the context's lod and declare it for the cache key, and both declare
+// bounding boxes, so a call with a camera builds them coarser when they are small on screen and
+// not at all when out of view. Without a camera (lod 0) every model is as its parameters say.
+//
 // Every model's mesh is closed, 2-manifold, oriented outward and free of self-intersections
 // (tests/models/procedural_models_test.cpp checks this with the CGAL validator), and the same
 // arguments and seed give the same bytes. Bad values are refused with std::invalid_argument
@@ -89,9 +94,11 @@ void register_procedural_models(ProcedureRegistry& registry, const std::function
 // and benchmarks that count cache hits use a registry of their own.
 ProcedureRegistry& procedural_registry();
 
-// The triangulated mesh of procedural_registry().call(name, args, {seed}), turned from the
+// The triangulated mesh of procedural_registry().call(name, args, {seed, lod}), turned from the
 // procedures' frame (y up, the front facing +z, as in the thesis's Java3D) to genmod's z up
-// (x, y, z) -> (x, -z, y): the front faces -y, towards `genmod preview`'s viewpoint.
-Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args = {}, std::int64_t seed = 0);
+// (x, y, z) -> (x, -z, y): the front faces -y, towards `genmod preview`'s viewpoint. The lod is
+// a refinement offset (camera.hpp): 0 as the parameters say, below 0 coarser for the models that
+// use it (tree, human), ignored by the others.
+Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args = {}, std::int64_t seed = 0, int lod = 0);
 
 }  // namespace genmod::models

@@ -8,11 +8,23 @@
 // for a Double parameter is converted when it is exactly representable (|v| <= 2^53), and the
 // converted value is what the body and the cache key see. Nothing else converts.
 //
+// Level of detail and lazy evaluation (section 1.8, camera.hpp): a call whose context has a
+// camera, of a procedure that declares bounds, first places the bounds by the context's
+// transform. If the camera does not see them the body is not run at all: an Out call returns
+// an empty mesh, an InOut call leaves the model as it was, nothing is looked up in or added to
+// the cache, and culled_calls counts it. Otherwise the camera's level (view_of_box) replaces
+// the context's lod for this call and its callees. Without a camera, or without bounds, the lod
+// is the inherited one (0 unless a caller set it). A camera is checked (check_camera) by every
+// call that carries one; bounds that are not a finite box (lo <= hi) and a non-finite transform
+// are refused when a camera reads them. The camera itself is not in the cache key: only the lod
+// it chose is, for procedures with uses_lod.
+//
 // Threads: register every procedure before calling from several threads; calls (and the cache
 // queries / switches) are then safe from any number of threads (e.g. TBB tasks).
 #pragma once
 
 #include "genmod/procedural/affine.hpp"
+#include "genmod/procedural/camera.hpp"
 #include "genmod/procedural/param_value.hpp"
 #include "genmod/procedural/poly_mesh.hpp"
 #include "genmod/procedural/procedure_cache.hpp"
@@ -46,7 +58,8 @@ ParamDecl param(std::string name, ParamValue default_value);
 struct Context {
   std::int64_t seed = 0;
   Affine transform;
-  int lod = 0;
+  int lod = 0;  // a refinement offset: 0 = as the parameters say, below 0 coarser (camera.hpp)
+  std::optional<Camera> camera = std::nullopt;  // none: no culling, the lod as given
 };
 
 // Per-call overrides of the inherited context.
@@ -54,6 +67,7 @@ struct CallOptions {
   std::optional<std::int64_t> seed;
   std::optional<int> lod;
   std::optional<Affine> transform;
+  std::optional<Camera> camera;
 };
 
 using NamedArgs = std::vector<std::pair<std::string, ParamValue>>;
@@ -86,6 +100,7 @@ class CallContext {
   std::int64_t seed() const { return context_.seed; }
   int lod() const { return context_.lod; }
   const Affine& transform() const { return context_.transform; }
+  const std::optional<Camera>& camera() const { return context_.camera; }
   PolyMesh call(std::string_view name, const NamedArgs& args = {}, const CallOptions& options = {}) const;
   // The same call for a part the body only reads (appends, measures): see
   // ProcedureRegistry::call_shared.
@@ -158,13 +173,18 @@ class ProcedureRegistry {
   void reset_cache_stats(std::string_view name) const;
   void set_cache_limit(std::string_view name, std::size_t limit) const;
   void clear_caches() const;  // drops every entry of every procedure, counters stay
+  // Calls of `name` that the camera culled (lazy evaluation), since registration.
+  std::uint64_t culled_calls(std::string_view name) const;
 
  private:
   struct Entry {
     ProcedureSpec spec;
     std::unique_ptr<ProcedureCache> cache;
+    std::unique_ptr<std::atomic<std::uint64_t>> culled = std::make_unique<std::atomic<std::uint64_t>>(0);
   };
   const Entry& entry(std::string_view name) const;
+  // The context a call runs in (the camera's lod applied), or none when the camera culls it.
+  std::optional<Context> in_view(const Entry& entry, const Arguments& args, Context context) const;
   std::string cache_key(const Entry& entry, const Arguments& args, const Context& context,
                         const PolyMesh* input) const;
   std::map<std::string, Entry, std::less<>> procedures_;
