@@ -2,7 +2,7 @@
 #include "genmod/tessellate/lattice.hpp"
 
 #include "genmod/kernel/batch_evaluator.hpp"
-#include "genmod/kernel/dag.hpp"
+#include "genmod/kernel/input_stages.hpp"
 #include "genmod/kernel/tape.hpp"
 
 #include <algorithm>
@@ -10,7 +10,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 
 namespace genmod {
 
@@ -161,36 +160,6 @@ void run_stage(const Tape& tape, const SubLattice& sub, const std::vector<Source
   }
 }
 
-std::vector<NodeId> children(const Node& n) {
-  if (n.op == Op::Custom) {
-    const auto args = dag::custom_args(n);
-    return {args.begin(), args.end()};
-  }
-  std::vector<NodeId> c;
-  for (int i = 0; i < arity(n.op); ++i) c.push_back(n.arg[i]);
-  return c;
-}
-
-// Rebuilds node n with its operands replaced by `mapped`; returns kNoNode when the DAG's
-// construction rules would not reproduce the same operation on the same operands in the
-// same order (then the tape would not compute the same bits). The nodes made are owned by
-// `refs`.
-NodeId rebuild(const Node& n, const std::vector<NodeId>& mapped, dag::Refs& refs) {
-  if (n.op == Op::Custom) return refs.own(dag::make_custom(n.custom, n.index, mapped));
-  const NodeId r = refs.own(dag::make(n.op, mapped[0], mapped.size() > 1 ? mapped[1] : kNoNode,
-                                      mapped.size() > 2 ? mapped[2] : kNoNode));
-  const Node& rn = dag::node(r);
-  if (rn.op != n.op) return kNoNode;
-  bool same = true;
-  for (std::size_t i = 0; i < mapped.size(); ++i) same = same && rn.arg[i] == mapped[i];
-  if (same) return r;
-  // Operands swapped by the commutative ordering: bitwise harmless except for min / max,
-  // whose result on (+0, -0) and on two NaNs depends on the order.
-  const bool swapped = mapped.size() == 2 && rn.arg[0] == mapped[1] && rn.arg[1] == mapped[0];
-  if (swapped && n.op != Op::Min && n.op != Op::Max) return r;
-  return kNoNode;
-}
-
 std::uint64_t coordinate_mask(const Lattice& lattice) {
   std::uint64_t m = 0;
   for (const LatticeAxis& a : lattice.axes()) m |= std::uint64_t{1} << a.coordinate;
@@ -240,129 +209,48 @@ std::vector<double> evaluate_plain(const Fn& f, const Lattice& lattice, LatticeS
   return result;
 }
 
+// The function split by input sets (stage_by_inputs): each stage is evaluated once per point
+// of the sub-lattice of its coordinates, reading lower stages' tables.
 std::vector<double> evaluate_tables(const Fn& f, const Lattice& lattice, LatticeStats& stats) {
-  const std::vector<NodeId> order = dag::topological_order(f.nodes());
-  std::unordered_map<NodeId, std::uint64_t> axis_mask;  // node -> lattice axes it depends on
-  std::vector<int> coord_to_axis(kMaxInputs, -1);
-  for (std::size_t i = 0; i < lattice.num_axes(); ++i)
-    coord_to_axis[static_cast<std::size_t>(lattice.axes()[i].coordinate)] = static_cast<int>(i);
-  for (NodeId id : order) {
-    std::uint64_t in = dag::node(id).inputs, am = 0;
-    while (in) {
-      const int c = std::countr_zero(in);
-      in &= in - 1;
-      am |= std::uint64_t{1} << coord_to_axis[static_cast<std::size_t>(c)];
-    }
-    axis_mask[id] = am;
-  }
-  auto tabulable = [](const Node& n) { return n.op != Op::Const && n.op != Op::Var; };
-
-  // Nodes needed as tables: used by a node of another stage, or a component of f.
-  std::unordered_map<NodeId, bool> needed;
-  for (NodeId id : order) {
-    const Node& n = dag::node(id);
-    for (NodeId c : children(n))
-      if (tabulable(dag::node(c)) && axis_mask[c] != axis_mask[id]) needed[c] = true;
-  }
-  for (NodeId c : f.nodes())
-    if (tabulable(dag::node(c))) needed[c] = true;
-
-  // Stages in order of dimension: every table a stage reads is built before it.
-  std::vector<std::uint64_t> masks;
-  for (NodeId id : order)
-    if (tabulable(dag::node(id)) && std::find(masks.begin(), masks.end(), axis_mask[id]) == masks.end())
-      masks.push_back(axis_mask[id]);
-  std::stable_sort(masks.begin(), masks.end(),
-                   [](std::uint64_t a, std::uint64_t b) { return std::popcount(a) < std::popcount(b); });
-
+  const StagedFunction staged = stage_by_inputs(f);
+  stats.fallback_stages += staged.fallback_stages;
+  // A set of coordinates -> the sub-lattice of their axes.
+  auto sub_of = [&lattice](std::uint64_t coordinates) {
+    std::uint64_t axes = 0;
+    for (std::size_t i = 0; i < lattice.num_axes(); ++i)
+      if (coordinates & (std::uint64_t{1} << lattice.axes()[i].coordinate)) axes |= std::uint64_t{1} << i;
+    return sub_lattice(lattice, axes);
+  };
   struct Table {
     SubLattice sub;
-    std::vector<double> values;  // output-major: values[slot * sub.size + point]
+    std::vector<double> values;  // output-major: values[output * sub.size + point]
   };
   std::vector<Table> tables;
-  tables.reserve(masks.size());
-  std::unordered_map<NodeId, std::pair<std::size_t, std::size_t>> where;  // node -> (table, slot)
-  std::vector<int> free_coords;
-  const std::uint64_t used_coords = coordinate_mask(lattice);
-  for (int c = 0; c < kMaxInputs; ++c)
-    if (!(used_coords & (std::uint64_t{1} << c))) free_coords.push_back(c);
+  tables.reserve(staged.stages.size());
   const std::vector<std::vector<double>> coords = coordinate_values(lattice);
+  // Where a stage input or a component reads its values, indexed by the points of `by`.
+  auto source = [&](const StageSource& s, const SubLattice& by) {
+    if (s.kind == StageSource::Kind::Coordinate) {
+      const std::size_t axis = axis_of(lattice, s.coordinate);
+      const auto pos = std::find(by.axes.begin(), by.axes.end(), axis) - by.axes.begin();
+      return coordinate_source(coords, by, static_cast<std::size_t>(pos));
+    }
+    const Table& t = tables[s.stage];
+    return Source{t.values.data() + s.output * t.sub.size, table_strides(t.sub, by)};
+  };
   BatchEvaluator ev;
-
-  for (std::uint64_t mask : masks) {
-    std::vector<NodeId> outs;
-    for (NodeId id : order)
-      if (axis_mask[id] == mask && needed.count(id)) outs.push_back(id);
-    if (outs.empty()) continue;
-    Table table{sub_lattice(lattice, mask), {}};
-
-    // Rewrite the stage: lower-stage operands become placeholder coordinates.
-    dag::Refs refs;  // the rewritten nodes, until stage_fn holds them
-    std::unordered_map<NodeId, NodeId> mapped;
-    std::vector<NodeId> placeholders;  // original nodes, in placeholder order
-    bool ok = true;
-    for (NodeId id : order) {
-      if (!ok) break;
-      if (axis_mask[id] != mask || !tabulable(dag::node(id))) continue;
-      const Node& n = dag::node(id);
-      std::vector<NodeId> args;
-      for (NodeId c : children(n)) {
-        const Node& cn = dag::node(c);
-        if (!tabulable(cn) || axis_mask[c] == mask) {
-          args.push_back(tabulable(cn) ? mapped.at(c) : c);
-          continue;
-        }
-        auto it = mapped.find(c);
-        if (it == mapped.end()) {
-          if (placeholders.size() >= free_coords.size()) {
-            ok = false;
-            break;
-          }
-          it = mapped.emplace(c, refs.own(dag::var(free_coords[placeholders.size()]))).first;
-          placeholders.push_back(c);
-        }
-        args.push_back(it->second);
-      }
-      if (!ok) break;
-      const NodeId r = rebuild(n, args, refs);
-      if (r == kNoNode) ok = false;
-      else mapped[id] = r;
-    }
-
-    std::vector<NodeId> stage_nodes;
-    std::vector<int> tape_inputs;
+  for (const InputStage& stage : staged.stages) {
+    Table table{sub_of(stage.inputs), {}};
     std::vector<Source> sources;
-    for (NodeId id : outs) stage_nodes.push_back(ok ? mapped.at(id) : id);
-    const Fn stage_fn(stage_nodes);
-    const std::uint64_t stage_inputs = stage_fn.input_mask();
-    for (std::size_t pos = 0; pos < table.sub.axes.size(); ++pos) {
-      const int c = lattice.axes()[table.sub.axes[pos]].coordinate;
-      if (stage_inputs & (std::uint64_t{1} << c)) {
-        tape_inputs.push_back(c);
-        sources.push_back(coordinate_source(coords, table.sub, pos));
-      }
-    }
-    if (ok) {
-      for (std::size_t k = 0; k < placeholders.size(); ++k) {
-        const int c = free_coords[k];
-        if (!(stage_inputs & (std::uint64_t{1} << c))) continue;
-        const auto [t, slot] = where.at(placeholders[k]);
-        const Table& src = tables[t];
-        tape_inputs.push_back(c);
-        sources.push_back(Source{src.values.data() + slot * src.sub.size, table_strides(src.sub, table.sub)});
-      }
-    } else {
-      ++stats.fallback_stages;
-    }
-    const Tape tape(stage_fn, tape_inputs);
-    table.values.resize(outs.size() * table.sub.size);
-    std::vector<double*> out_ptr(outs.size());
-    for (std::size_t j = 0; j < outs.size(); ++j) out_ptr[j] = table.values.data() + j * table.sub.size;
-    run_stage(tape, table.sub, sources, out_ptr, ev);
-    count_ops(tape, table.sub.size, stats);
+    for (const StageSource& s : stage.sources) sources.push_back(source(s, table.sub));
+    const std::size_t outs = stage.tape.num_outputs();
+    table.values.resize(outs * table.sub.size);
+    std::vector<double*> out_ptr(outs);
+    for (std::size_t j = 0; j < outs; ++j) out_ptr[j] = table.values.data() + j * table.sub.size;
+    run_stage(stage.tape, table.sub, sources, out_ptr, ev);
+    count_ops(stage.tape, table.sub.size, stats);
     ++stats.tables;
     stats.table_entries += table.values.size();
-    for (std::size_t j = 0; j < outs.size(); ++j) where[outs[j]] = {tables.size(), j};
     tables.push_back(std::move(table));
   }
 
@@ -372,17 +260,12 @@ std::vector<double> evaluate_tables(const Fn& f, const Lattice& lattice, Lattice
   const std::uint64_t all = lattice.num_axes() == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << lattice.num_axes()) - 1;
   const SubLattice full = sub_lattice(lattice, all);
   for (std::size_t j = 0; j < m; ++j) {
-    const NodeId c = f.node(j);
-    const Node& n = dag::node(c);
-    if (tabulable(n)) {
-      const auto [t, slot] = where.at(c);
-      gather(tables[t].values.data() + slot * tables[t].sub.size, table_strides(tables[t].sub, full), full, 0,
-             total, result.data() + j, m);
-    } else if (n.op == Op::Var) {
-      const Source src = coordinate_source(coords, full, axis_of(lattice, n.index));
-      gather(src.values, src.stride, full, 0, total, result.data() + j, m);
+    const StageSource& c = staged.components[j];
+    if (c.kind == StageSource::Kind::Constant) {
+      for (std::size_t p = 0; p < total; ++p) result[p * m + j] = c.value;
     } else {
-      for (std::size_t p = 0; p < total; ++p) result[p * m + j] = n.value;
+      const Source src = source(c, full);
+      gather(src.values, src.stride, full, 0, total, result.data() + j, m);
     }
   }
   return result;

@@ -7,6 +7,7 @@
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/gradient_evaluator.hpp"
 #include "genmod/kernel/inclusion.hpp"
+#include "genmod/kernel/input_stages.hpp"
 #include "genmod/kernel/interval.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/opcode.hpp"

@@ -9,10 +9,10 @@
 // fastest: p = k_0 + N_0 * (k_1 + N_1 * (k_2 + ...)).
 //
 // Table lookup (the thesis's speedup, [FRAN81]): every DAG node depends on a subset of the
-// lattice coordinates (Node::inputs). Nodes are grouped by that subset ("stage"); each stage
-// is compiled into its own tape, where values of lower-dimensional subfunctions are read from
-// their tables instead of being recomputed, and evaluated (batch evaluator) once per point of
-// its own sub-lattice. So e^{x2} in (x1 x2 + x2 x3) e^{x2} is computed N_2 times, not
+// lattice coordinates. The kernel's stage_by_inputs (genmod/kernel/input_stages.hpp) groups
+// the nodes by that subset ("stage") and compiles each stage into its own tape, where values
+// of lower-dimensional subfunctions are read from their tables instead of being recomputed;
+// here each stage is evaluated (batch evaluator) once per point of its own sub-lattice. So e^{x2} in (x1 x2 + x2 x3) e^{x2} is computed N_2 times, not
 // N_1 N_2 N_3 times. Every node is evaluated by the same clause on the same operand values as
 // in a plain tape, so results are bitwise equal to point evaluation (NaN = error in both).
 // A stage whose rewrite would change the DAG's structure (an operand reorder of min/max, or
