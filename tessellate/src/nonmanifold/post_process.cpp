@@ -1,6 +1,7 @@
 // The non-manifold polygonizer's post-processes (§5.7.5): small and thin triangles removed,
 // and junction vertices duplicated per region pair.
 #include "genmod/tessellate/nonmanifold_polygonizer.hpp"
+#include "nonmanifold/post_process.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -70,8 +71,43 @@ std::size_t clean(RegionMesh& m) {
   return removed;
 }
 
-// Collapses triangle edges shorter than `length` to their midpoints; returns how many.
-std::size_t collapse(RegionMesh& m, double length) {
+using nonmanifold::LatticeSimplex;
+
+// Where the merged vertex of a short edge u-w goes, and its simplex: it must stay in the
+// closure of both simplices, since the triangles of every tetrahedron around either now use
+// it. The same simplex: the midpoint, as in the source; one a face of the other: the vertex
+// on the face; else the point of the corner or edge they share nearest the midpoint (within
+// 1.4 times the edge's length of it: the lattice edges at a corner are 45 degrees or more
+// apart). False when they share none (opposite edges of a tetrahedron: at least a cube edge
+// over the square root of 2 apart, never that close).
+bool merge_target(const Point& pu, const LatticeSimplex& cu, const Point& pw, const LatticeSimplex& cw, Point& p,
+                  LatticeSimplex& cell) {
+  const Point mid{0.5 * (pu[0] + pw[0]), 0.5 * (pu[1] + pw[1]), 0.5 * (pu[2] + pw[2])};
+  if (cu.size == 0 || cw.size == 0) {  // no lattice: remove_small_triangles on its own
+    p = mid;
+    cell = {};
+    return cu.size == cw.size;
+  }
+  const bool u_in_w = is_face_of(cu, cw), w_in_u = is_face_of(cw, cu);
+  if (u_in_w && w_in_u) {
+    p = mid;
+    cell = cu;
+    return true;
+  }
+  if (w_in_u || u_in_w) {
+    p = w_in_u ? pw : pu;
+    cell = w_in_u ? cw : cu;
+    return true;
+  }
+  const LatticeSimplex shared = meet(cu, cw);
+  if (shared.size < 1 || shared.size > 2) return false;
+  p = nonmanifold::nearest_on(shared, mid, cell);
+  return true;
+}
+
+// Collapses triangle edges shorter than `length` (see merge_target for where to); returns how
+// many.
+std::size_t collapse(RegionMesh& m, double length, std::vector<LatticeSimplex>& cells) {
   std::vector<std::uint32_t> alias(m.mesh.vertices.size());
   for (std::uint32_t v = 0; v < alias.size(); ++v) alias[v] = v;
   const auto find = [&](std::uint32_t v) {
@@ -84,7 +120,11 @@ std::size_t collapse(RegionMesh& m, double length) {
       std::uint32_t a = find(t[static_cast<std::size_t>(e)]), b = find(t[static_cast<std::size_t>((e + 1) % 3)]);
       if (a == b || !(distance(m.mesh.vertices[a], m.mesh.vertices[b]) < length)) continue;
       if (b < a) std::swap(a, b);
-      for (int d = 0; d < 3; ++d) m.mesh.vertices[a][d] = 0.5 * (m.mesh.vertices[a][d] + m.mesh.vertices[b][d]);
+      Point p;
+      LatticeSimplex cell;
+      if (!merge_target(m.mesh.vertices[a], cells[a], m.mesh.vertices[b], cells[b], p, cell)) continue;
+      m.mesh.vertices[a] = p;
+      cells[a] = cell;
       // A junction or border vertex keeps its kind: internal, then face, then edge.
       if (static_cast<int>(m.vertex_kinds[b]) > static_cast<int>(m.vertex_kinds[a])) m.vertex_kinds[a] = m.vertex_kinds[b];
       alias[b] = a;
@@ -98,8 +138,11 @@ std::size_t collapse(RegionMesh& m, double length) {
 // Moves each vertex closer than `length` to the opposite edge of a triangle onto that edge
 // (at its nearest point) and splits the other triangles on the edge there, so the mesh stays
 // closed. Triangles changed in this pass are left for the next, and a vertex moves once
-// (`moved`), so that the passes end; returns how many moved.
-std::size_t split_thin(RegionMesh& m, double length, std::vector<bool>& moved) {
+// (`moved`), so that the passes end; returns how many moved. A vertex moves only when the
+// edge lies in the closure of its simplex (it then lies in the simplex the edge's ends span):
+// an edge vertex, whose lattice edge holds no other vertex of the triangle, stays, and so does
+// its thin triangle.
+std::size_t split_thin(RegionMesh& m, double length, std::vector<bool>& moved, std::vector<LatticeSimplex>& cells) {
   auto& tris = m.mesh.triangles;
   // Most meshes have none: look before building the edge map.
   bool any = false;
@@ -120,6 +163,7 @@ std::size_t split_thin(RegionMesh& m, double length, std::vector<bool>& moved) {
       if (b < a) std::swap(a, b);
       on_edge[{a, b}].push_back(t);
     }
+  const auto has = [&](std::size_t s, std::uint32_t v) { return tris[s][0] == v || tris[s][1] == v || tris[s][2] == v; };
   std::vector<bool> touched(tris.size(), false);
   std::size_t count = 0;
   const std::size_t original = tris.size();
@@ -138,22 +182,27 @@ std::size_t split_thin(RegionMesh& m, double length, std::vector<bool>& moved) {
       bool free = true;
       for (std::size_t s : across) {
         free = free && !touched[s];
-        if (s != t) free = free && tris[s][0] != v && tris[s][1] != v && tris[s][2] != v;
+        if (s != t) free = free && !has(s, v);
       }
       if (!free) continue;
+      const LatticeSimplex cell = join(cells[a], cells[b]);
+      const bool lattice = cells[v].size > 0;  // else remove_small_triangles on its own
+      if (lattice && (cell.size == 0 || !is_face_of(cell, cells[v]))) continue;
       const Point pa = m.mesh.vertices[a], pb = m.mesh.vertices[b];
-      for (int d = 0; d < 3; ++d) m.mesh.vertices[v][d] = pa[d] + u * (pb[d] - pa[d]);
+      const Point p{pa[0] + u * (pb[0] - pa[0]), pa[1] + u * (pb[1] - pa[1]), pa[2] + u * (pb[2] - pa[2])};
+      m.mesh.vertices[v] = p;
+      if (lattice) cells[v] = cell;
       moved[v] = true;
       for (std::size_t s : across) {
         touched[s] = true;
         if (s == t) continue;
         Tri& x = tris[s];
         for (int k = 0; k < 3; ++k) {
-          const std::uint32_t p = x[static_cast<std::size_t>(k)], q = x[static_cast<std::size_t>((k + 1) % 3)],
+          const std::uint32_t p0 = x[static_cast<std::size_t>(k)], q = x[static_cast<std::size_t>((k + 1) % 3)],
                               r = x[static_cast<std::size_t>((k + 2) % 3)];
-          if (!((p == a && q == b) || (p == b && q == a)) || r == v) continue;
+          if (!((p0 == a && q == b) || (p0 == b && q == a)) || r == v) continue;
           const std::pair<int, int> region = m.regions[s];
-          x = {p, v, r};
+          x = {p0, v, r};
           tris.push_back({v, q, r});
           m.regions.push_back(region);
           ++m.stats.split_edges;
@@ -168,43 +217,56 @@ std::size_t split_thin(RegionMesh& m, double length, std::vector<bool>& moved) {
   return count;
 }
 
-void drop_unused_vertices(RegionMesh& m) {
+void drop_unused_vertices(RegionMesh& m, std::vector<LatticeSimplex>& cells) {
   std::vector<std::int64_t> map(m.mesh.vertices.size(), -1);
   std::vector<Point> vertices;
   std::vector<RegionVertexKind> kinds;
+  std::vector<LatticeSimplex> kept;
   for (Tri& t : m.mesh.triangles)
     for (auto& v : t) {
       if (map[v] < 0) {
         map[v] = static_cast<std::int64_t>(vertices.size());
         vertices.push_back(m.mesh.vertices[v]);
         kinds.push_back(m.vertex_kinds[v]);
+        kept.push_back(cells[v]);
       }
       v = static_cast<std::uint32_t>(map[v]);
     }
   m.mesh.vertices = std::move(vertices);
   m.vertex_kinds = std::move(kinds);
+  cells = std::move(kept);
 }
 
 }  // namespace
 
-void remove_small_triangles(RegionMesh& m, double min_length) {
+namespace nonmanifold {
+
+void remove_small_triangles(RegionMesh& m, double min_length, std::vector<LatticeSimplex>& cells) {
   if (!std::isfinite(min_length) || min_length < 0.0)
     throw std::invalid_argument("genmod: remove_small_triangles: min_length must be finite and >= 0");
-  if (m.regions.size() != m.mesh.triangles.size() || m.vertex_kinds.size() != m.mesh.vertices.size())
+  if (m.regions.size() != m.mesh.triangles.size() || m.vertex_kinds.size() != m.mesh.vertices.size() ||
+      cells.size() != m.mesh.vertices.size())
     throw std::invalid_argument("genmod: remove_small_triangles: the region and vertex-kind arrays do not match the mesh");
   // Each pass collapses (fewer vertices) or moves a vertex that never moved before, so the
   // loop ends; the bound is a guard.
   std::vector<bool> moved(m.mesh.vertices.size(), false);
   for (std::size_t pass = 0; pass < 4 * m.mesh.vertices.size() + 16; ++pass) {
-    const std::size_t collapsed = collapse(m, min_length);
+    const std::size_t collapsed = collapse(m, min_length, cells);
     m.stats.collapsed_edges += collapsed;
     if (collapsed > 0 || pass == 0) m.stats.removed_triangles += clean(m);
     if (collapsed > 0) continue;
-    const std::size_t split = split_thin(m, min_length, moved);
+    const std::size_t split = split_thin(m, min_length, moved, cells);
     if (split == 0) break;
     m.stats.removed_triangles += clean(m);
   }
-  drop_unused_vertices(m);
+  drop_unused_vertices(m, cells);
+}
+
+}  // namespace nonmanifold
+
+void remove_small_triangles(RegionMesh& m, double min_length) {
+  std::vector<nonmanifold::LatticeSimplex> unknown(m.mesh.vertices.size());
+  nonmanifold::remove_small_triangles(m, min_length, unknown);
 }
 
 Mesh split_by_region_pair(const RegionMesh& m, std::vector<std::pair<int, int>>* vertex_pairs,
