@@ -74,9 +74,13 @@
 // vertices of the maple leaf off their faces, laying triangles across each other). A short edge
 // is collapsed to its midpoint when both ends are on one simplex, onto the end on the
 // smaller simplex when one is a face of the other, else onto the lattice corner or edge the
-// two share (within 1.4 times the collapse length); a thin triangle's vertex moves onto the
-// opposite edge only when that edge lies in its simplex's closure (so an edge vertex, the
-// only kind on a two-region surface, never does, and its thin triangle stays).
+// two share (within 1.4 times the collapse length; vertices put on one corner are welded
+// into one); a thin triangle's vertex moves onto the opposite edge only when that edge lies
+// in its simplex's closure and no other triangle around it is laid flat into a lattice face
+// (so an edge vertex, the only kind on a two-region surface, never does, and its thin
+// triangle stays). Two triangles a collapse puts on the same vertices with opposite
+// orientations are removed when they separate the same regions, and become one triangle
+// between y and z when they separate (x, y) and (x, z): region x closed up between them.
 // `split_by_region_pair` makes the spec's duplicated vertices (one copy of a junction vertex
 // per region pair of the triangles around it), and `region_pair_normals` gives each copy the
 // normal of its own sheet.
