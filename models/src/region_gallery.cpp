@@ -14,9 +14,9 @@ const std::vector<RegionModel>& region_models() {
        "Bloomenthal's maple leaf (Sec. 7.4, reconstructed): five veins and a petiole blended into a flat blade sheet; "
        "non-manifold where blade meets vein, open at the blade's margin",
        {{"vein_radius", 0.04, "radius of the veins at their base (0 < r <= 0.1; they taper to half)"}},
-       // The research notes' 0.02-0.03. The region polygonizer still leaves a few
-       // self-intersecting triangle pairs near blade/vein junctions (8 at 0.02, 4 at 0.025);
-       // `genmod mesh` reports them.
+       // The research notes' 0.02-0.03. No self-intersecting or degenerate triangles at
+       // cubes 0.015 to 0.04 (before issue 11's fix of the post-process: 4 to 9 pairs near
+       // blade/vein junctions); `genmod mesh` checks.
        0.02},
   };
   return models;

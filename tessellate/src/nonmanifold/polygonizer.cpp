@@ -3,6 +3,8 @@
 // method is described in nonmanifold_polygonizer.hpp).
 #include "genmod/tessellate/nonmanifold_polygonizer.hpp"
 #include "nonmanifold/face_follower.hpp"
+#include "nonmanifold/lattice_simplex.hpp"
+#include "nonmanifold/post_process.hpp"
 #include "nonmanifold/region_evaluator.hpp"
 
 #include <algorithm>
@@ -16,6 +18,7 @@ namespace genmod {
 
 namespace {
 
+using nonmanifold::LatticeSimplex;
 using nonmanifold::Point;
 using nonmanifold::RegionEvaluator;
 using Coord = std::array<std::int64_t, 3>;
@@ -43,6 +46,7 @@ struct Candidate {
   int a = -1, b = -1;         // edge vertex: regions before and after it, lower to higher corner
   Point in_a{}, in_b{};       // its last interval: an end in region a and one in region b
   std::uint64_t lo = 0, hi = 0;  // its edge's corner keys
+  LatticeSimplex cell;        // the lattice edge, face or tetrahedron it lies in
   std::int64_t mesh = -1;     // mesh vertex, once used
 };
 
@@ -175,7 +179,7 @@ class Polygonizer {
     if (limit_bounds_) out_.stats.limits_hit.emplace_back("bounds");
     if (cancelled_) out_.stats.limits_hit.emplace_back("cancelled");
     out_.stats.face_evaluations = face_evaluations_;
-    if (s_.close_factor > 0.0) remove_small_triangles(out_, s_.close_factor * out_.stats.eps);
+    if (s_.close_factor > 0.0) nonmanifold::remove_small_triangles(out_, s_.close_factor * out_.stats.eps, cells_);
     return std::move(out_);
   }
 
@@ -294,6 +298,8 @@ class Polygonizer {
     Candidate proto;
     proto.lo = std::min(ka, kb);
     proto.hi = std::max(ka, kb);
+    const std::uint64_t ends[2] = {proto.lo, proto.hi};
+    proto.cell = nonmanifold::make_simplex(ends, std::array<Point, 2>{pa, pb}.data(), 2);
     const std::vector<Point>& x = samples_;
     const std::vector<int>& r = regions_;
     for (int i = 0; i < n; ++i)
@@ -353,6 +359,7 @@ class Polygonizer {
     for (const Entry& e : walk) junction_of_interest = junction_of_interest || interesting(e.x, e.y);
     if (junction_of_interest) {
       rec.face_vertex = face_vertex(rec.corners, walk);
+      candidates_[rec.face_vertex].cell = nonmanifold::make_simplex(k.data(), rec.corners.data(), 3);
       for (const Entry& e : walk)
         if (interesting(e.x, e.y)) rec.lines.push_back({rec.face_vertex, e.vertex, e.y, e.x, false});
     }
@@ -410,6 +417,7 @@ class Polygonizer {
       c.mesh = static_cast<std::int64_t>(out_.mesh.vertices.size());
       out_.mesh.vertices.push_back(c.p);
       out_.vertex_kinds.push_back(c.kind);
+      cells_.push_back(c.cell);
     }
     return static_cast<std::uint32_t>(c.mesh);
   }
@@ -479,6 +487,7 @@ class Polygonizer {
         v.kind = RegionVertexKind::internal;
         for (int id : face_vertices)
           for (int d = 0; d < 3; ++d) v.p[d] += candidates_[id].p[d] / static_cast<double>(face_vertices.size());
+        v.cell = nonmanifold::make_simplex(keys.data(), pos.data(), 4);
         centre = new_candidate(v);
         ++out_.stats.internal_vertices;
       }
@@ -602,6 +611,7 @@ class Polygonizer {
   std::unordered_map<std::array<std::uint64_t, 3>, int, Key3Hash> face_index_;
   std::size_t face_evaluations_ = 0;
   RegionMesh out_;
+  std::vector<LatticeSimplex> cells_;  // per mesh vertex
   std::vector<Point> samples_;
   std::vector<int> regions_;
 };

@@ -64,14 +64,26 @@
 // regions[t].first into regions[t].second (first < second).
 //
 // Post-process (§5.7.5, when close_factor > 0): triangle edges shorter than
-// close_factor * eps are collapsed to their midpoint, and a vertex closer than that to the
-// opposite edge of a triangle is moved onto that edge, the triangles across the edge split at
-// it, so a closed mesh stays closed (moved to the nearest point of the edge, not to its
-// midpoint as in the source: that keeps every vertex within close_factor * eps of where it
-// was, instead of up to half an edge); degenerate triangles are removed and vertices no longer
-// used are dropped. `split_by_region_pair` makes the spec's duplicated vertices (one copy of a
-// junction vertex per region pair of the triangles around it), and `region_pair_normals` gives
-// each copy the normal of its own sheet.
+// close_factor * eps are collapsed, and a vertex closer than that to the opposite edge of a
+// triangle is moved onto that edge (to its nearest point, not its midpoint as in the source),
+// the triangles across the edge split at it, so a closed mesh stays closed; degenerate
+// triangles are removed and vertices no longer used are dropped. No vertex leaves the lattice
+// edge, tetrahedron face or tetrahedron it was made on (its closure), since the triangles of
+// every tetrahedron around that simplex use it: so the triangles of each tetrahedron stay in
+// it and meet those of others only on shared faces (issue 11: the source's moves took junction
+// vertices of the maple leaf off their faces, laying triangles across each other). A short edge
+// is collapsed to its midpoint when both ends are on one simplex, onto the end on the
+// smaller simplex when one is a face of the other, else onto the lattice corner or edge the
+// two share (within 1.4 times the collapse length; vertices put on one corner are welded
+// into one); a thin triangle's vertex moves onto the opposite edge only when that edge lies
+// in its simplex's closure and no other triangle around it is laid flat into a lattice face
+// (so an edge vertex, the only kind on a two-region surface, never does, and its thin
+// triangle stays). Two triangles a collapse puts on the same vertices with opposite
+// orientations are removed when they separate the same regions, and become one triangle
+// between y and z when they separate (x, y) and (x, z): region x closed up between them.
+// `split_by_region_pair` makes the spec's duplicated vertices (one copy of a junction vertex
+// per region pair of the triangles around it), and `region_pair_normals` gives each copy the
+// normal of its own sheet.
 //
 // Limits: `max_cubes` (cubes polygonized) and the lattice (a walk that would leave the bounds)
 // are reported in stats.limits_hit ("cubes", "bounds", and "cancelled" for a stop request); the
@@ -163,10 +175,11 @@ RegionMesh polygonize_regions(std::span<const Fn> regions, const NonmanifoldSett
 // The region of each point under the arg-max rule above (for tests and clients).
 std::vector<int> region_at(std::span<const Fn> regions, std::span<const std::array<double, 3>> points);
 
-// The spec's post-process 1 on its own (see above): collapses edges shorter than
-// `min_length`, moves vertices closer than it to an opposite edge onto the edge (splitting the
+// The spec's post-process 1 on its own: collapses edges shorter than `min_length` (to their
+// midpoints), moves vertices closer than it to an opposite edge onto the edge (splitting the
 // triangles across it), removes degenerate triangles and unused vertices. Updates the stats'
-// post-process counts.
+// post-process counts. Without the lattice that polygonize_regions keeps its vertices on,
+// this can lay triangles across each other where sheets meet closer than `min_length`.
 void remove_small_triangles(RegionMesh& mesh, double min_length);
 
 // Post-process 2: a mesh in which each vertex is duplicated once per distinct region pair of
