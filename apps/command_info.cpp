@@ -3,7 +3,7 @@
 #include "commands.hpp"
 #include "model_file.hpp"
 
-#include "genmod/kernel/dag.hpp"
+#include "genmod/kernel/expression.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
 
@@ -93,7 +93,7 @@ int run_info(std::span<const std::string> args) {
 
   std::printf("model: %s\n", path.c_str());
   std::printf("definitions read: %zu\n", count_definitions(path));
-  std::printf("DAG nodes: %zu\n", dag::topological_order(f.nodes()).size());
+  std::printf("DAG nodes: %zu\n", count_nodes(f));
   std::printf("tape: %zu clauses, %u registers, %zu constants\n", tape.size(), tape.num_registers(),
               tape.constants().size());
   std::printf("inputs:");

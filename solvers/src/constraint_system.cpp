@@ -1,6 +1,6 @@
 #include "genmod/solvers/constraint_system.hpp"
 
-#include "genmod/kernel/dag.hpp"
+#include "genmod/kernel/expression.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -101,25 +101,28 @@ ConstraintSystem::ConstraintSystem(const Fn& constraint, Coordinates unknowns,
 }
 
 std::uint32_t ConstraintSystem::parse(NodeId id) {
-  const genmod::Node& node_ = dag::node(id);
+  const Fn f = Fn::of(id);
+  const Expression e = expression(f);
   Node n{};
   Relation rel{};
-  if (node_.op == Op::And || node_.op == Op::Or) {
-    const std::uint32_t a = parse(node_.arg[0]);
-    const std::uint32_t b = parse(node_.arg[1]);
-    n.kind = node_.op == Op::And ? Node::And : Node::Or;
+  if (e.op == Op::And || e.op == Op::Or) {
+    const std::uint32_t a = parse(e.operands[0].node(0));
+    const std::uint32_t b = parse(e.operands[1].node(0));
+    n.kind = e.op == Op::And ? Node::And : Node::Or;
     n.a = a;
     n.b = b;
-  } else if (node_.op == Op::Not) {
+  } else if (e.op == Op::Not) {
     n.kind = Node::Not;
-    n.a = parse(node_.arg[0]);
+    n.a = parse(e.operands[0].node(0));
   } else {
     Fn h;
-    if (relation_of(node_.op, rel)) {
-      h = dag::is_const(node_.arg[1], 0.0) ? Fn::of(node_.arg[0]) : Fn::of(node_.arg[0]) - Fn::of(node_.arg[1]);
+    if (relation_of(e.op, rel)) {
+      const Expression rhs = expression(e.operands[1]);
+      const bool zero = rhs.op == Op::Const && rhs.value == 0.0;
+      h = zero ? e.operands[0] : e.operands[0] - e.operands[1];
     } else {
       rel = Relation::Nonzero;
-      h = Fn::of(id);
+      h = f;
     }
     n.kind = Node::Atom;
     n.a = static_cast<std::uint32_t>(atoms_.size());

@@ -1,6 +1,5 @@
 #include "genmod/solvers/cross_section_matching.hpp"
 
-#include "genmod/kernel/dag.hpp"
 #include "genmod/operators/integrate.hpp"
 #include "genmod/solvers/inverse_operator.hpp"
 #include "genmod/solvers/minimize_operator.hpp"

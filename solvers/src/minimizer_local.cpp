@@ -2,7 +2,7 @@
 #include "genmod/solvers/minimizer.hpp"
 #include "minimizer_detail.hpp"
 
-#include "genmod/kernel/dag.hpp"
+#include "genmod/kernel/expression.hpp"
 
 #include <Eigen/Dense>
 
@@ -15,44 +15,37 @@
 namespace genmod {
 namespace {
 
-// Rewrites eq(a, b) -> |a - b| <= eta in the and / or skeleton of the constraint. The nodes
-// made are owned by `refs` (the caller wraps the result in an Fn before it goes).
-NodeId relax(NodeId id, double eta, std::unordered_map<NodeId, NodeId>& memo, dag::Refs& refs) {
-  if (auto it = memo.find(id); it != memo.end()) return it->second;
-  const Node& n = dag::node(id);
-  NodeId out = id;
-  if (n.op == Op::Eq) {
-    const NodeId diff = refs.own(dag::make(Op::Sub, n.arg[0], n.arg[1]));
-    out = refs.own(dag::make(Op::Le, refs.own(dag::make(Op::Abs, diff)), refs.own(dag::constant(eta))));
-  } else if (n.op == Op::And || n.op == Op::Or) {
-    const NodeId a = relax(n.arg[0], eta, memo, refs), b = relax(n.arg[1], eta, memo, refs);
-    out = refs.own(dag::make(n.op, a, b));
-  }
-  memo.emplace(id, out);
+// Rewrites eq(a, b) -> |a - b| <= eta in the and / or skeleton of the scalar constraint c.
+Fn relax(const Fn& c, double eta, std::unordered_map<NodeId, Fn>& memo) {
+  if (auto it = memo.find(c.node(0)); it != memo.end()) return it->second;
+  const Expression e = expression(c);
+  Fn out = c;
+  if (e.op == Op::Eq) out = abs(e.operands[0] - e.operands[1]) <= Fn(eta);
+  else if (e.op == Op::And) out = relax(e.operands[0], eta, memo) && relax(e.operands[1], eta, memo);
+  else if (e.op == Op::Or) out = relax(e.operands[0], eta, memo) || relax(e.operands[1], eta, memo);
+  memo.emplace(c.node(0), out);
   return out;
 }
 
-// Appends the residual nodes (owned by `refs`) of the and-skeleton of the constraint.
-void collect_residuals(NodeId id, std::vector<NodeId>& out, dag::Refs& refs) {
-  const Node& n = dag::node(id);
-  auto excess = [&](NodeId a, NodeId b) {  // max(a - b, 0)
-    return refs.own(dag::make(Op::Max, refs.own(dag::make(Op::Sub, a, b)), refs.own(dag::constant(0.0))));
-  };
-  switch (n.op) {
+// Appends the residuals of the and-skeleton of the scalar constraint c.
+void collect_residuals(const Fn& c, std::vector<Fn>& out) {
+  const Expression e = expression(c);
+  auto excess = [](const Fn& a, const Fn& b) { return max(a - b, Fn(0.0)); };
+  switch (e.op) {
     case Op::And:
-      collect_residuals(n.arg[0], out, refs);
-      collect_residuals(n.arg[1], out, refs);
+      collect_residuals(e.operands[0], out);
+      collect_residuals(e.operands[1], out);
       break;
     case Op::Eq:
-      out.push_back(refs.own(dag::make(Op::Sub, n.arg[0], n.arg[1])));
+      out.push_back(e.operands[0] - e.operands[1]);
       break;
     case Op::Lt:
     case Op::Le:
-      out.push_back(excess(n.arg[0], n.arg[1]));
+      out.push_back(excess(e.operands[0], e.operands[1]));
       break;
     case Op::Gt:
     case Op::Ge:
-      out.push_back(excess(n.arg[1], n.arg[0]));
+      out.push_back(excess(e.operands[1], e.operands[0]));
       break;
     default:
       break;  // or, not, select, ...: no residual (local search then relies on descent only)
@@ -66,21 +59,19 @@ Fn relax_equalities(const Fn& constraint, double eta) {
     throw std::invalid_argument("genmod::relax_equalities: the tolerance must be finite and >= 0, got " +
                                 std::to_string(eta));
   if (eta == 0.0) return constraint;
-  std::unordered_map<NodeId, NodeId> memo;
-  dag::Refs refs;
-  std::vector<NodeId> nodes;
-  for (NodeId id : constraint.nodes()) nodes.push_back(relax(id, eta, memo, refs));
-  return Fn(std::move(nodes));
+  std::unordered_map<NodeId, Fn> memo;
+  std::vector<Fn> parts;
+  for (std::size_t j = 0; j < constraint.dim(); ++j) parts.push_back(relax(constraint[j], eta, memo));
+  return cat(parts);
 }
 
 namespace minimizer_detail {
 
 std::optional<Fn> constraint_residuals(const Fn& constraint) {
-  dag::Refs refs;
-  std::vector<NodeId> residuals;
-  for (NodeId id : constraint.nodes()) collect_residuals(id, residuals, refs);
+  std::vector<Fn> residuals;
+  for (std::size_t j = 0; j < constraint.dim(); ++j) collect_residuals(constraint[j], residuals);
   if (residuals.empty()) return std::nullopt;
-  return Fn(std::move(residuals));
+  return cat(residuals);
 }
 
 LocalSearch::LocalSearch(const Tape& objective, const Tape& constraint, std::optional<Tape> residuals,

@@ -1,7 +1,6 @@
 // Private: argument checks shared by the solver operators (solve, minimize).
 #pragma once
 
-#include "genmod/kernel/dag.hpp"
 
 #include <cstdint>
 #include <span>

@@ -1,6 +1,5 @@
 #include "genmod/solvers/schedule.hpp"
 
-#include "genmod/kernel/dag.hpp"
 #include "genmod/operators/vector.hpp"
 #include "genmod/solvers/inverse_operator.hpp"
 
