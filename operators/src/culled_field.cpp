@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -116,8 +117,12 @@ class CulledFieldOp final : public CustomOp {
     double t = options_.cull_below > 0 ? first_threshold_ : 0.0;
     for (;;) {
       detail::near_point(options_.hierarchy ? &bvh_ : nullptr, linear_, order_, point, t, near);
-      near.indices.insert(near.indices.end(), always_.begin(), always_.end());
+      // always_ is in index order: sort the walk's elements and merge (linear for a field whose
+      // elements are all in always_, as with cull_below = 0).
       std::sort(near.indices.begin(), near.indices.end());
+      const auto walked = static_cast<std::ptrdiff_t>(near.indices.size());
+      near.indices.insert(near.indices.end(), always_.begin(), always_.end());
+      std::inplace_merge(near.indices.begin(), near.indices.begin() + walked, near.indices.end());
       // In index order, so that the sum rounds as the plain sum of those elements does.
       double sum = 0, magnitude = 0;
       for (std::uint32_t k : near.indices) {
