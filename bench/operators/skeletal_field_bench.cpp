@@ -13,13 +13,19 @@
 //    take about 100 times longer).
 //  * BM_GradientOctree/<mode>/...: the same octree, and at each box that may hold surface the
 //    gradient's inclusion as well (the mesher's normal-cone test): modes 1-3.
+//  * BM_PointField/<mode>/<n>/<where>: point evaluations of the density (PointEvaluator on its
+//    tape) at 256 fixed points: <where> 0 near the skeleton (within 0.06 of a random
+//    segment's end, as a mesher's samples are), 1 anywhere in [-2.2, 2.2]^3 (mostly empty
+//    space). Modes 1 (every element: the sum without culling) and 3 (the hierarchy).
 //  * BM_MeshField/<mode>/<n>: mesh_implicit of the field in the cube of side 0.16 at the origin
-//    at cell size 0.02, one thread (modes 1 and 3; 1,000 elements: the mesher's exact point
-//    evaluations pay every Gaussian element, so 10,000 would take minutes per run).
+//    at cell size 0.02, one thread: modes 1 and 3 at 1,000 elements, and mode 3 at 10,000 once
+//    (its point evaluations walk the hierarchy; the second derivatives of Gaussian elements,
+//    in the mesher's Hessian inclusions, still sum every element).
 //
 // The skeleton: a random walk of n segments of length 0.05 with direction persistence in
 // [-2, 2]^3, branching from a random earlier node one time in ten; radius 0.02 .. 0.04.
 #include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
 #include "genmod/operators/convolution.hpp"
 #include "genmod/operators/culled_field.hpp"
@@ -129,6 +135,29 @@ void BM_GradientOctree(benchmark::State& state) {
   state.counters["ambiguous"] = static_cast<double>(c.ambiguous);
 }
 
+void BM_PointField(benchmark::State& state) {
+  const auto& es = field(static_cast<int>(state.range(1)));
+  const int xyz[3] = {0, 1, 2};
+  const Tape f(density(es, static_cast<int>(state.range(0))), xyz);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> near(-0.06, 0.06), anywhere(-2.2, 2.2);
+  std::vector<std::array<double, 3>> points;
+  for (int i = 0; i < 256; ++i) {
+    if (state.range(2) == 0) {
+      const Point3& c = es[std::uniform_int_distribution<std::size_t>(0, es.size() - 1)(rng)].b;
+      points.push_back({c[0] + near(rng), c[1] + near(rng), c[2] + near(rng)});
+    } else {
+      points.push_back({anywhere(rng), anywhere(rng), anywhere(rng)});
+    }
+  }
+  PointEvaluator pv;
+  double total = 0;
+  for (auto _ : state)
+    for (const auto& p : points) total += pv.eval(f, p)[0];
+  benchmark::DoNotOptimize(total);
+  state.counters["points/s"] = benchmark::Counter(static_cast<double>(state.iterations() * points.size()), benchmark::Counter::kIsRate);
+}
+
 void BM_MeshField(benchmark::State& state) {
   const auto& es = field(static_cast<int>(state.range(1)));
   const ImplicitSurface s(density_to_implicit(density(es, static_cast<int>(state.range(0)))));
@@ -143,7 +172,11 @@ void BM_MeshField(benchmark::State& state) {
 BENCHMARK(BM_FieldOctree)->ArgsProduct({{0, 1, 2, 3}, {10000}, {3}, {550}})->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_FieldOctree)->ArgsProduct({{2, 3}, {10000}, {6}, {4400}})->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GradientOctree)->ArgsProduct({{1, 2, 3}, {10000}, {3}, {550}})->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true)->Unit(benchmark::kMillisecond);
+// Arguments: mode, elements, where.
+BENCHMARK(BM_PointField)->ArgsProduct({{1, 3}, {1000, 10000}, {0, 1}})->Repetitions(3)->ReportAggregatesOnly(true)->Unit(benchmark::kMicrosecond);
 // Arguments: mode, elements.
 BENCHMARK(BM_MeshField)->ArgsProduct({{1, 3}, {1000}})->Iterations(1)->Repetitions(3)->ReportAggregatesOnly(true)->Unit(benchmark::kMillisecond);
+// The hierarchy at 10,000 elements, once (point evaluations walk the hierarchy too).
+BENCHMARK(BM_MeshField)->Args({3, 10000})->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include "culled_field_bounds.hpp"
 #include "culled_field_bvh.hpp"
+#include "culled_field_point.hpp"
 #include "genmod/kernel/custom_op.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -25,6 +27,8 @@ namespace {
 using detail::box_distance2_below;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// The point value's tolerance, relative to the visited elements' magnitude (header).
+constexpr double kPointTolerance = 0x1p-60;
 const int kXyz[3] = {0, 1, 2};
 
 // How an element of a field of the given derivative order is culled.
@@ -69,8 +73,6 @@ class CulledFieldOp final : public CustomOp {
       const FieldElement& e = elements_[k];
       tapes_.emplace_back(e.density, std::span<const int>(kXyz, 3));
       const Cull kind = cull_kind(e, order_);
-      kinds_.push_back(kind);
-      has_compact_ = has_compact_ || kind == Cull::compact;
       const double d2 = cull_distance2(e, kind, options_.cull_below);
       if (!std::isfinite(d2)) {
         always_.push_back(static_cast<std::uint32_t>(k));
@@ -86,6 +88,14 @@ class CulledFieldOp final : public CustomOp {
       it.taper = kind == Cull::gradient ? e.taper : 0.0;
       items.push_back(it);
     }
+    double top_weight = 0;
+    for (const detail::BvhItem& it : items)
+      if (it.remainder) ++remainder_items_, top_weight = std::max(top_weight, it.weight);
+    // The first pass guesses that the visited elements' magnitude is about the largest weight
+    // (the peak of one element): with a bound of at most t per skipped subtree, the bounds
+    // beyond the nearest skipped ones decay fast, so the tolerance is usually met at once.
+    if (remainder_items_ > 0)
+      first_threshold_ = kPointTolerance * std::max(top_weight, options_.cull_below) / (2 * static_cast<double>(remainder_items_));
     if (options_.hierarchy) bvh_ = detail::ElementBvh(std::move(items));
     else linear_ = std::move(items);
   }
@@ -93,39 +103,43 @@ class CulledFieldOp final : public CustomOp {
   int num_args() const override { return 3; }
   int num_outputs() const override { return 1; }
 
-  // The full sum; compact elements whose support cannot reach the point are exactly 0 there
-  // and are skipped (the same sum, faster).
+  // The point rule of the header: passes at decreasing thresholds until the skipped
+  // elements' bound is within the tolerance of the visited ones' magnitude.
   void eval(std::span<const double> args, std::span<double> out) const override {
     if (std::isnan(args[0] + args[1] + args[2])) {
       out[0] = std::numeric_limits<double>::quiet_NaN();
       return;
     }
     const Interval point[3] = {Interval(args[0]), Interval(args[1]), Interval(args[2])};
-    // The compact elements that may reach the point, in index order.
-    std::vector<std::uint32_t> near;
-    if (has_compact_) {
-      auto take = [&](const detail::BvhItem& it) {
-        if (kinds_[it.index] == Cull::compact) near.push_back(it.index);
-      };
-      if (options_.hierarchy) bvh_.query(point, [](const detail::BvhNode&, double, std::uint32_t) {}, take);
-      else
-        for (const detail::BvhItem& it : linear_)
-          if (box_distance2_below(it.lo, it.hi, point) < it.cull2) take(it);
-      std::sort(near.begin(), near.end());
-    }
+    detail::PointNear near;
     PointEvaluator pv;
-    double sum = 0;
-    // In index order (so the sum rounds as the plain sum does): every non-compact element, and
-    // the compact ones that may reach the point.
-    std::size_t next = 0;
-    for (std::size_t k = 0; k < tapes_.size(); ++k) {
-      if (kinds_[k] == Cull::compact) {
-        while (next < near.size() && near[next] < k) ++next;
-        if (next == near.size() || near[next] != k) continue;
+    // cull_below = 0 (no culling): t = 0 skips only compact elements beyond their support.
+    double t = options_.cull_below > 0 ? first_threshold_ : 0.0;
+    for (;;) {
+      detail::near_point(options_.hierarchy ? &bvh_ : nullptr, linear_, order_, point, t, near);
+      // always_ is in index order: sort the walk's elements and merge (linear for a field whose
+      // elements are all in always_, as with cull_below = 0).
+      std::sort(near.indices.begin(), near.indices.end());
+      const auto walked = static_cast<std::ptrdiff_t>(near.indices.size());
+      near.indices.insert(near.indices.end(), always_.begin(), always_.end());
+      std::inplace_merge(near.indices.begin(), near.indices.begin() + walked, near.indices.end());
+      // In index order, so that the sum rounds as the plain sum of those elements does.
+      double sum = 0, magnitude = 0;
+      for (std::uint32_t k : near.indices) {
+        const double v = pv.eval(tapes_[k], args)[0];
+        sum += v, magnitude += std::abs(v);
       }
-      sum += pv.eval(tapes_[k], args)[0];
+      const double tolerance = kPointTolerance * std::max(magnitude, options_.cull_below);
+      if (near.remainder <= tolerance || t == 0) {
+        out[0] = sum;
+        return;
+      }
+      // Every skipped subtree's bound is <= t, so at most (remainder items) x t is skipped: this
+      // threshold meets the tolerance (the magnitude only grows with more elements); t = 0
+      // (every element) is the last resort should rounding defeat it.
+      const double next = tolerance / (2 * static_cast<double>(remainder_items_));
+      t = next < t ? next : 0.0;
     }
-    out[0] = sum;
   }
 
   void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override {
@@ -136,10 +150,12 @@ class CulledFieldOp final : public CustomOp {
       }
     IntervalEvaluator iv;
     Interval sum(0.0);
+    double magnitude = 0;  // >= the sum of |D_e| over the box of the elements evaluated here
     auto add = [&](std::uint32_t k) {
       const auto y = iv.eval(tapes_[k], args);
       err[0] |= iv.errors()[0];
       sum = sum + y[0];
+      magnitude += std::max(std::abs(y[0].lo()), std::abs(y[0].hi()));
     };
     for (std::uint32_t k : always_) add(k);
     // An upper bound of the culled elements' total magnitude: a sum of `terms` non-negative
@@ -166,6 +182,14 @@ class CulledFieldOp final : public CustomOp {
     }
     const double r = remainder * (1 + (terms + 1) * 0x1p-52);
     out[0] = sum + (order_ == 0 ? Interval(0.0, r) : Interval(-r, r));
+    // The point value at any p of the box is within kPointTolerance max(M, cull_below) of the
+    // exact sum, M the rounded sum of |D_e(p)| over the elements it visits; M <= (magnitude + r)
+    // up to rounding, which the factor 2 absorbs. Order 0 skips only elements >= 0: the point
+    // value can only be lower.
+    if (options_.cull_below > 0) {
+      const double w = 2 * kPointTolerance * std::max(magnitude + r, options_.cull_below);
+      out[0] = out[0] + (order_ == 0 ? Interval(-w, 0.0) : Interval(-w, w));
+    }
   }
 
   // Another culled field, of the elements' partial derivatives (culled as the header says).
@@ -199,8 +223,8 @@ class CulledFieldOp final : public CustomOp {
   CulledFieldOptions options_;
   int order_;
   std::vector<Tape> tapes_;
-  std::vector<Cull> kinds_;
-  bool has_compact_ = false;
+  std::size_t remainder_items_ = 0;       // Gaussian elements in the hierarchy
+  double first_threshold_ = 0;            // the first pass's t (point evaluation)
   std::vector<std::uint32_t> always_;     // never culled: evaluated on every box
   detail::ElementBvh bvh_;                // the others, with options_.hierarchy
   std::vector<detail::BvhItem> linear_;   // the others, without

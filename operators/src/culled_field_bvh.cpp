@@ -19,11 +19,15 @@ void summarize(BvhNode& n, std::span<const BvhItem> items) {
   n.cull2 = 0;
   n.remainders = 0;
   n.weight = n.radius = n.taper = 0;
+  n.compact2 = 0;
   for (std::uint32_t k = n.begin; k < n.end; ++k) {
     const BvhItem& it = items[k];
     for (int i = 0; i < 3; ++i) n.lo[i] = std::min(n.lo[i], it.lo[i]), n.hi[i] = std::max(n.hi[i], it.hi[i]);
     n.cull2 = std::max(n.cull2, it.cull2);
-    if (!it.remainder) continue;
+    if (!it.remainder) {
+      n.compact2 = std::max(n.compact2, it.cull2);
+      continue;
+    }
     ++n.remainders;
     n.weight = std::max(n.weight, it.weight);
     n.radius = std::max(n.radius, it.radius);

@@ -48,6 +48,7 @@ struct BvhNode {
   std::uint32_t child;            // the first of two children (child + 1 the second); 0: a leaf
   std::uint32_t remainders;       // the number of items with a remainder
   double weight, radius, taper;   // the largest of those items' parameters
+  double compact2;                // the largest cull2 of the items without one (0: none)
 };
 
 class ElementBvh {
@@ -88,6 +89,31 @@ class ElementBvh {
         else near(it);
       }
       if (count > 0) culled(n, d2, count);
+    }
+  }
+
+  // The same walk with the caller's tests instead of the cull distances (a point's evaluation
+  // skips by its own threshold): a subtree is skipped when skip_node(node, d2) is true, an item
+  // of a leaf when skip_item(item, d2) is true (d2 a lower bound of the squared distance from
+  // the box to it); near(item) for every other item.
+  template <class SkipNode, class SkipItem, class Near>
+  void visit(std::span<const Interval> box, SkipNode&& skip_node, SkipItem&& skip_item, Near&& near) const {
+    if (nodes_.empty()) return;
+    std::uint32_t stack[kMaxDepth + 2];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const BvhNode& n = nodes_[stack[--top]];
+      if (skip_node(n, box_distance2_below(n.lo, n.hi, box))) continue;
+      if (n.child != 0) {
+        stack[top++] = n.child + 1;
+        stack[top++] = n.child;
+        continue;
+      }
+      for (std::uint32_t k = n.begin; k < n.end; ++k) {
+        const BvhItem& it = items_[k];
+        if (!skip_item(it, box_distance2_below(it.lo, it.hi, box))) near(it);
+      }
     }
   }
 

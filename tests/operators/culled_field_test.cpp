@@ -196,6 +196,14 @@ std::vector<std::vector<Interval>> test_boxes(const std::vector<FieldElement>& e
   return out;
 }
 
+// The header's bound on |point value - exact sum|, 2^-60 max(M, cull_below) with M the sum of
+// the elements' |values|, plus the rounding of this test's reference sum and the value's: at
+// most 400-odd terms of one sign pattern, taken as 2^-50 M (sums of this size round far
+// below it; an element wrongly skipped is caught once it exceeds it).
+double point_tolerance(double magnitude, double cull_below) {
+  return 0x1p-60 * std::max(magnitude, cull_below) + 0x1p-50 * magnitude;
+}
+
 std::vector<double> sample(const std::vector<Interval>& box, std::mt19937& rng) {
   std::uniform_real_distribution<double> w(0, 1);
   std::vector<double> p(3);
@@ -224,31 +232,81 @@ TEST(CulledFieldHierarchy, ContainsSampledValuesAndMatchesTheLinearScan) {
       tighter += h.hi() < l.hi() - 1e-12;
       for (int s = 0; s < 8; ++s) {
         const std::vector<double> p = sample(box, rng);
-        const double v = pv.eval(th, p)[0];
-        ASSERT_EQ(v, pv.eval(tl, p)[0]);
+        const double v = pv.eval(th, p)[0], vl = pv.eval(tl, p)[0];
+        // Both within the point tolerance of the exact sum (they may skip different elements).
+        ASSERT_NEAR(v, vl, 2 * point_tolerance(std::max(v, vl), cull_below));
         ASSERT_TRUE(h.contains(v)) << "value " << v << " outside " << h;
+        ASSERT_TRUE(l.contains(vl)) << "value " << vl << " outside " << l;
       }
     }
     EXPECT_GT(tighter, 50);  // far subtrees' remainders are below cull_below
   }
 }
 
-// The point value is the plain sum, and the inclusion of a degenerate box (a point) holds it.
-TEST(CulledFieldHierarchy, PointValueIsThePlainSum) {
+// The point value is the exact sum within the header's tolerance, for the value and the first
+// derivatives, at points near the skeleton, anywhere, and far outside; the inclusion of a
+// degenerate box (a point) holds it. The reference sums the same element tapes in index order.
+TEST(CulledFieldHierarchy, PointValueIsThePlainSumWithinTheTolerance) {
   const std::vector<FieldElement> es = random_field(400, 1301);
-  Fn plain = es[0].density;
-  for (std::size_t i = 1; i < es.size(); ++i) plain = plain + es[i].density;
-  const Fn culled = culled_field(es);
-  const Tape tc(culled, kXyz), tp(plain, kXyz);
+  std::mt19937 rng(1302);
+  std::uniform_real_distribution<double> near(-0.1, 0.1), anywhere(-1.2, 1.2), far(1.3, 2.0);
+  std::vector<std::vector<double>> points;
+  for (int i = 0; i < 150; ++i) {
+    const Point3& c = es[std::uniform_int_distribution<std::size_t>(0, es.size() - 1)(rng)].a;
+    if (i % 3 == 0) points.push_back({c[0] + near(rng), c[1] + near(rng), c[2] + near(rng)});
+    else if (i % 3 == 1) points.push_back({anywhere(rng), anywhere(rng), anywhere(rng)});
+    else points.push_back({far(rng), anywhere(rng), -far(rng)});
+  }
   PointEvaluator pv;
   IntervalEvaluator iv;
-  std::mt19937 rng(1302);
-  std::uniform_real_distribution<double> u(-1.1, 1.1);
-  for (int i = 0; i < 200; ++i) {
-    const std::vector<double> p = {u(rng), u(rng), u(rng)};
-    const double v = pv.eval(tp, p)[0];
-    ASSERT_EQ(pv.eval(tc, p)[0], v);
-    ASSERT_TRUE(iv.eval(tc, cube({p[0], p[1], p[2]}, 0.0))[0].contains(v));
+  for (const double cull_below : {1e-6, 1e-3}) {
+    SCOPED_TRACE(cull_below);
+    const Fn culled = culled_field(es, {.cull_below = cull_below});
+    int differs = 0;  // points where the value is not the full sum's (elements were skipped)
+    for (int k = -1; k < 3; ++k) {
+      SCOPED_TRACE(k);
+      const Tape tc(k < 0 ? culled : derivative(culled, k), kXyz);
+      std::vector<Tape> terms;
+      for (const FieldElement& e : es) terms.emplace_back(k < 0 ? e.density : derivative(e.density, k), kXyz);
+      for (const std::vector<double>& p : points) {
+        double sum = 0, magnitude = 0;
+        for (const Tape& t : terms) {
+          const double v = pv.eval(t, p)[0];
+          sum += v, magnitude += std::abs(v);
+        }
+        const double v = pv.eval(tc, p)[0];
+        ASSERT_NEAR(v, sum, point_tolerance(magnitude, cull_below)) << p[0] << " " << p[1] << " " << p[2];
+        if (k < 0) {
+          ASSERT_LE(v, sum);  // only elements >= 0 are skipped
+        }
+        differs += v != sum;
+        ASSERT_TRUE(iv.eval(tc, cube({p[0], p[1], p[2]}, 0.0))[0].contains(v));
+      }
+    }
+    EXPECT_GT(differs, 50);  // far points skip every element
+  }
+}
+
+// A tiny cull_below makes the inclusion evaluate elements that a point's walk skips (its
+// threshold is then above cull_below): the inclusion's widening must still hold the point
+// values, of the field and of its first derivatives.
+TEST(CulledFieldHierarchy, InclusionHoldsPointValuesWhenPointsSkipMore) {
+  const std::vector<FieldElement> es = random_field(500, 1351);
+  const Fn culled = culled_field(es, {.cull_below = 1e-30});
+  IntervalEvaluator iv;
+  PointEvaluator pv;
+  std::mt19937 rng(1352);
+  for (int k = -1; k < 3; ++k) {
+    SCOPED_TRACE(k);
+    const Tape tc(k < 0 ? culled : derivative(culled, k), kXyz);
+    for (const auto& box : test_boxes(es, 120, 1353 + static_cast<unsigned>(k))) {
+      const Interval y = iv.eval(tc, box)[0];
+      for (int s = 0; s < 6; ++s) {
+        const std::vector<double> p = sample(box, rng);
+        const double v = pv.eval(tc, p)[0];
+        ASSERT_TRUE(y.contains(v)) << v << " outside " << y;
+      }
+    }
   }
 }
 
@@ -284,7 +342,9 @@ TEST(CulledFieldHierarchy, DerivativeInclusionContainsSampledDerivatives) {
           const std::vector<double> p = sample(box, rng);
           const double g = pv.eval(dp, p)[0];
           ASSERT_TRUE(d.contains(g)) << "d/dx" << k << " " << g << " outside " << d;
-          ASSERT_NEAR(pv.eval(dc, p)[0], g, 1e-9 * (1 + std::abs(g)));
+          const double gc = pv.eval(dc, p)[0];
+          ASSERT_NEAR(gc, g, 1e-9 * (1 + std::abs(g)));
+          ASSERT_TRUE(d.contains(gc)) << "d/dx" << k << " " << gc << " outside " << d;
         }
       }
       // Central differences of the culled field's values.
@@ -323,10 +383,17 @@ TEST(CulledFieldHierarchy, GaussianDerivativesAreCulledWhenDeclared) {
   for (FieldElement& e : es) e.taper = -1;
   const Interval undeclared = iv.eval(Tape(derivative(culled_field(es, {.cull_below = 1e-3}), 0), kXyz), far)[0];
   EXPECT_NE(undeclared.lo(), -undeclared.hi());
-  const double g = at(derivative(declared_field, 0), c[0], c[1], c[2]);
+  // The exact derivative (every element) there, and the culled field's point value, which
+  // may skip all of them (it is within 2^-60 cull_below of the exact one).
+  Fn plain = es[0].density;
+  for (std::size_t i = 1; i < es.size(); ++i) plain = plain + es[i].density;
+  const double g = at(derivative(plain, 0), c[0], c[1], c[2]);
   EXPECT_NE(g, 0.0);
   EXPECT_TRUE(declared.contains(g));
   EXPECT_TRUE(undeclared.contains(g));
+  const double gc = at(derivative(declared_field, 0), c[0], c[1], c[2]);
+  EXPECT_NEAR(gc, g, 0x1p-60 * 1e-3);
+  EXPECT_TRUE(declared.contains(gc));
 }
 
 TEST(CulledFieldHierarchy, OperatorProperties) {
