@@ -24,9 +24,11 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Brent's method (Numerical Recipes' zbrent) for a root of f in [a, b]; NaN when the ends do not
 // bracket a sign change or f is NaN at a visited point. Stops when the bracket is below `tol`.
+// fa and fb are f(a) and f(b) when the caller knows them, else NaN.
 template <class F>
-double brent(F&& f, double a, double b, double tol) {
-  double fa = f(a), fb = f(b);
+double brent(F&& f, double a, double b, double tol, double fa = kNaN, double fb = kNaN) {
+  if (std::isnan(fa)) fa = f(a);
+  if (std::isnan(fb)) fb = f(b);
   if (std::isnan(fa) || std::isnan(fb)) return kNaN;
   if (fa == 0.0) return a;
   if (fb == 0.0) return b;
@@ -120,7 +122,32 @@ class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp
       point[0] = t;
       return ev.eval(*invert_tape_, point)[0] - match;
     };
-    return brent(f, domain_.lo(), domain_.hi(), epsilon_);
+    const Bracket br = bracket(match);
+    return brent(f, br.a, br.b, epsilon_, br.fa, br.fb);
+  }
+
+  // Where Brent's method starts for the value m: with a table of invert's values (invert
+  // depends on t alone), the table cell whose end values straddle m, found by bisection of the
+  // table, with F's values there (the same evaluation as Brent's, bitwise: they have opposite
+  // signs, as Brent requires); else the whole domain. A value outside the table's range is
+  // left to Brent on the whole domain (no bracket: NaN).
+  struct Bracket {
+    double a, b;
+    double fa = kNaN, fb = kNaN;  // F(a) and F(b) if known
+  };
+  Bracket bracket(double m) const {
+    const std::size_t n = table_t_.size();
+    if (n < 2) return {domain_.lo(), domain_.hi()};
+    // below(k): F(t_k) < 0 for increasing values, > 0 for decreasing ones.
+    const bool increasing = table_g_.back() > table_g_.front();
+    auto below = [&](std::size_t k) { return increasing ? table_g_[k] < m : table_g_[k] > m; };
+    if (!below(0) || below(n - 1)) return {domain_.lo(), domain_.hi()};
+    std::size_t lo = 0, hi = n - 1;  // below(lo), !below(hi)
+    while (hi - lo > 1) {
+      const std::size_t mid = lo + (hi - lo) / 2;
+      (below(mid) ? lo : hi) = mid;
+    }
+    return {table_t_[lo], table_t_[hi], table_g_[lo] - m, table_g_[hi] - m};
   }
 
   void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override {
@@ -299,6 +326,22 @@ class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp
     const Interval d = ev.eval(*dt_tape_, box)[0];
     if (ev.errors()[0] != kNoError || d.is_empty()) return;
     separable_direction_ = d.lo() > 0.0 ? 1 : (d.hi() < 0.0 ? -1 : 0);
+    if (separable_direction_ == 0) return;
+    // invert's point values at evenly spaced t: Brent then starts from one cell of the table
+    // (a few steps) instead of the whole domain (a dozen or more), at every point and box.
+    PointEvaluator pev;
+    std::vector<double> point(inputs_.size(), 0.0);
+    for (int k = 0; k <= kTableCells; ++k) {
+      point[0] = k == kTableCells ? domain_.hi() : domain_.lo() + (domain_.hi() - domain_.lo()) * k / kTableCells;
+      const double g = pev.eval(*invert_tape_, point)[0];
+      if (std::isnan(g)) {  // cannot happen for a certified monotone invert; stay general
+        table_t_.clear();
+        table_g_.clear();
+        return;
+      }
+      table_t_.push_back(point[0]);
+      table_g_.push_back(g);
+    }
   }
 
   // F = g(t) - match with g strictly monotone on the domain: the roots for match values in
@@ -350,7 +393,8 @@ class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp
         point[0] = t;
         return pev.eval(*invert_tape_, point)[0] - m;
       };
-      double start = brent(f, domain_.lo(), domain_.hi(), epsilon_);
+      const Bracket br = bracket(m);
+      double start = brent(f, br.a, br.b, epsilon_, br.fa, br.fb);
       if (std::isnan(start)) return end;
       for (double step = epsilon_;; step *= 2.0) {
         const double t = start + dir * step;
@@ -405,6 +449,8 @@ class InverseOp : public CustomOp, public std::enable_shared_from_this<InverseOp
   // increasing / decreasing on the domain, else 0; its enclosures at the domain's ends; and
   // whether it is continuous there (it cannot fail there, or the direction stays 0).
   int separable_direction_ = 0;
+  static constexpr int kTableCells = 256;
+  std::vector<double> table_t_, table_g_;  // invert's point values at t_k (separable only)
   Interval invert_at_lo_, invert_at_hi_;
   bool invert_continuous_ = false;
 };

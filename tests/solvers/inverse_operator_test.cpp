@@ -12,6 +12,7 @@
 #include <functional>
 #include <random>
 #include <stdexcept>
+#include <tuple>
 #include <vector>
 
 namespace genmod {
@@ -38,6 +39,32 @@ TEST(InverseOperator, PointValuesSolveTheEquation) {
   // Not bracketed on [0,1]: the error condition (NaN).
   EXPECT_TRUE(std::isnan(at(r, {0.0, 2.5})));
   EXPECT_TRUE(std::isnan(at(r, {0.0, -0.1})));
+}
+
+// A monotone invert of t alone starts Brent's method from a cell of a table of its values:
+// values equal to a table entry, just beside one and between two are all solved, for an
+// increasing and a decreasing invert, and every value lies in the enclosure of a small box
+// around its argument.
+TEST(InverseOperator, SeparableRootsAtAndBetweenTableNodes) {
+  const Fn t = x(0);
+  const Fn rising = inverse(t * t * t + t, x(1), 0);
+  const Fn falling = inverse(2.0 - t * t * t - t, x(1), 0);
+  const Tape rising_tape(rising, std::vector<int>{1}), falling_tape(falling, std::vector<int>{1});
+  IntervalEvaluator iev;
+  for (int k = 0; k <= 512; ++k) {
+    const double node = k / 512.0;  // every table node (256 cells) and every cell's middle
+    const double g = node * node * node + node;
+    for (double m : {g, std::nextafter(g, -1.0), std::nextafter(g, 3.0)}) {
+      if (m < 0.0 || m > 2.0) continue;
+      for (const auto& [f, tape, value] : {std::tuple{&rising, &rising_tape, m}, std::tuple{&falling, &falling_tape, 2.0 - m}}) {
+        const double r = at(*f, {0.0, value});
+        ASSERT_NEAR(r * r * r + r, m, 1e-12) << "k " << k;
+        const Interval box(value - 1e-9, value + 1e-9);
+        const Interval e = iev.eval(*tape, {box})[0];
+        EXPECT_TRUE(e.contains(r)) << "k " << k << " value " << value;
+      }
+    }
+  }
 }
 
 TEST(InverseOperator, DerivativeMatchesImplicitFunctionTheoremAndFiniteDifferences) {
