@@ -3,6 +3,7 @@
 // Python truth value, so `if f == g:` is an error instead of a silent identity test.
 #include "bindings.hpp"
 
+#include "genmod/kernel/expression.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/tape.hpp"
 #include "genmod/kernel/vm_format.hpp"
@@ -98,8 +99,8 @@ are NaN at points and flagged in bounds.)doc");
     write_vm(os, f);
     return os.str();
   }, "The scalar function as .vm text (what save_vm writes).");
-  m.def("live_nodes", &dag::size, "The number of live expression nodes (the store reclaims what nothing holds).");
-  m.def("live_custom_operators", &dag::custom_count, "The number of live custom operators.");
+  m.def("live_nodes", &live_nodes, "The number of live expression nodes (the store reclaims what nothing holds).");
+  m.def("live_custom_operators", &live_custom_operators, "The number of live custom operators.");
   m.def("x", &x, py::arg("i"), "The parametric coordinate x(i), 0 <= i < 64.");
   m.def("identical", [](const Fn& a, const Fn& b) { return identical(a, b); }, py::arg("a"), py::arg("b"),
         "True when both handles hold the same nodes (structurally equal functions are identical).");

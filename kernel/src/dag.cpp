@@ -1,5 +1,5 @@
 // The process-wide hash-consed node store.
-#include "genmod/kernel/dag.hpp"
+#include "dag.hpp"
 
 #include "genmod/kernel/custom_op.hpp"
 #include "point_ops.hpp"

@@ -2,6 +2,9 @@
 #include "genmod/kernel/custom_op.hpp"
 #include "genmod/kernel/fn.hpp"
 
+#include "dag.hpp"
+#include "derivative_rules.hpp"
+
 #include <map>
 #include <numbers>
 #include <tuple>
@@ -14,12 +17,13 @@
 namespace genmod {
 namespace {
 
-bool zero(NodeId n) { return dag::is_const(n, 0.0); }
-
 // Makes nodes for a walk: every node made is owned by the walk's Refs and released when the
-// walk is done, after its results are wrapped in Fn values (see dag.hpp, Lifetime).
+// walk is done, after its results are wrapped in Fn values (see dag.hpp, Lifetime). It is the
+// node algebra of derivative_rules.hpp.
 class Builder {
- protected:
+ public:
+  using T = NodeId;
+  static bool zero(NodeId n) { return dag::is_const(n, 0.0); }
   NodeId c(double v) { return refs_.own(dag::constant(v)); }
   NodeId make(Op op, NodeId a, NodeId b = kNoNode, NodeId third = kNoNode) {
     return refs_.own(dag::make(op, a, b, third));
@@ -85,76 +89,44 @@ class Differentiator : private Builder {
     return memo_.at(id);
   }
 
-  // The arguments whose derivatives rule() uses: none for the piecewise constant ops, the two
-  // branches of a select (not its condition).
-  template <class F>
-  static void for_each_needed(const Node& n, F& f) {
-    switch (n.op) {
+  // Whether rule() reads the derivative of operand k: not for the piecewise constant ops, not
+  // for a select's condition.
+  static bool needs_derivative(Op op, int k) {
+    switch (op) {
       case Op::Floor: case Op::Ceil: case Op::Not: case Op::IsError:
       case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne:
-      case Op::And: case Op::Or: case Op::Const: case Op::Var:
-        return;
-      case Op::Select:
-        f(n.arg[1]);
-        f(n.arg[2]);
-        return;
-      case Op::Custom:
-        for (NodeId a : dag::custom_args(n)) f(a);
-        return;
-      default:
-        for (int k = 0; k < arity(n.op); ++k) f(n.arg[k]);
+      case Op::And: case Op::Or:
+        return false;
+      case Op::Select: return k != 0;
+      default: return true;
     }
   }
 
+  // The arguments whose derivatives rule() uses.
+  template <class F>
+  static void for_each_needed(const Node& n, F& f) {
+    if (n.op == Op::Custom) {
+      for (NodeId a : dag::custom_args(n)) f(a);
+      return;
+    }
+    for (int k = 0; k < arity(n.op); ++k)
+      if (needs_derivative(n.op, k)) f(n.arg[k]);
+  }
+
   NodeId rule(NodeId id, const Node& n) {
-    const NodeId a = n.arg[0], b = n.arg[1];
     switch (n.op) {
       case Op::Var: return c(n.index == var_ ? 1.0 : 0.0);
-      case Op::Neg: return make(Op::Neg, d(a));
-      case Op::Add: return add(d(a), d(b));
-      case Op::Sub: return sub(d(a), d(b));
-      case Op::Mul: return add(mul(d(a), b), mul(a, d(b)));
-      case Op::Div: return div(sub(d(a), mul(id, d(b))), b);  // (a' - f b') / b
-      case Op::Square: return mul(mul(c(2.0), a), d(a));
-      case Op::Sqrt: return div(d(a), mul(c(2.0), id));
-      case Op::Exp: return mul(id, d(a));
-      case Op::Log: return div(d(a), a);
-      case Op::Sin: return mul(make(Op::Cos, a), d(a));
-      case Op::Cos: return mul(make(Op::Neg, make(Op::Sin, a)), d(a));
-      case Op::Tan: return mul(add(c(1.0), make(Op::Square, id)), d(a));
-      case Op::Asin: return div(d(a), make(Op::Sqrt, sub(c(1.0), make(Op::Square, a))));
-      case Op::Acos: return make(Op::Neg, div(d(a), make(Op::Sqrt, sub(c(1.0), make(Op::Square, a)))));
-      case Op::Atan: return div(d(a), add(c(1.0), make(Op::Square, a)));
-      case Op::Atan2: {  // atan2(y, x)' = (x y' - y x') / (x^2 + y^2)
-        const NodeId num = sub(mul(b, d(a)), mul(a, d(b)));
-        return div(num, add(make(Op::Square, b), make(Op::Square, a)));
-      }
-      case Op::Abs: {
-        const NodeId da = d(a);
-        return make(Op::Select, make(Op::Lt, a, c(0.0)), make(Op::Neg, da), da);
-      }
-      case Op::Min: return make(Op::Select, make(Op::Lt, a, b), d(a), d(b));  // matches point::min
-      case Op::Max: return make(Op::Select, make(Op::Gt, a, b), d(a), d(b));
-      case Op::Select: return make(Op::Select, a, d(b), d(n.arg[2]));
-      case Op::Pow: {
-        const NodeId db = d(b);
-        // Constant exponent: b a^(b-1) a' (also right for negative bases with integer b).
-        const NodeId power_rule = mul(mul(b, make(Op::Pow, a, sub(b, c(1.0)))), d(a));
-        if (zero(db)) return power_rule;
-        return add(power_rule, mul(mul(id, make(Op::Log, a)), db));
-      }
+      case Op::Const: return c(0.0);
       case Op::Custom: return custom_rule(n);
-      // Piecewise constant: derivative 0 wherever it exists.
-      case Op::Floor: case Op::Ceil: case Op::Not: case Op::IsError:
-      case Op::Lt: case Op::Le: case Op::Gt: case Op::Ge: case Op::Eq: case Op::Ne:
-      case Op::And: case Op::Or: case Op::Const:
-        return c(0.0);
-      // Tape-only forms never occur in the DAG.
-      case Op::AddImm: case Op::MulImm: case Op::SubImm: case Op::DivImmR: case Op::DivImmL: case Op::MinImm:
-      case Op::MaxImm: case Op::Load: case Op::Call: case Op::CallOut:
-        break;
+      default: break;
     }
-    throw std::logic_error("genmod: derivative: unexpected op " + std::string(op_name(n.op)));
+    // The operands' derivatives the rule reads (for_each_needed made them); the others are
+    // never read, and kNoNode operands stay kNoNode.
+    NodeId d_arg[3] = {kNoNode, kNoNode, kNoNode};
+    for (int k = 0; k < arity(n.op); ++k)
+      if (needs_derivative(n.op, k)) d_arg[k] = d(n.arg[k]);
+    return detail::derivative_rule(static_cast<Builder&>(*this), n.op, id, n.arg[0], n.arg[1], d_arg[0], d_arg[1],
+                                   d_arg[2]);
   }
 
   // Chain rule: sum over arguments k of (d out_j / d arg_k) * arg_k'.

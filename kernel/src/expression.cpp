@@ -1,7 +1,7 @@
 // expression(): a scalar Fn's root node as an opcode and operand Fns (see expression.hpp).
 #include "genmod/kernel/expression.hpp"
 
-#include "genmod/kernel/dag.hpp"
+#include "dag.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -29,5 +29,8 @@ Expression expression(const Fn& f) {
 }
 
 std::size_t count_nodes(const Fn& f) { return dag::topological_order(f.nodes()).size(); }
+
+std::size_t live_nodes() noexcept { return dag::size(); }
+std::size_t live_custom_operators() noexcept { return dag::custom_count(); }
 
 }  // namespace genmod

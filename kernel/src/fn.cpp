@@ -3,6 +3,8 @@
 
 #include "genmod/kernel/custom_op.hpp"
 
+#include "dag.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -31,10 +33,10 @@ std::vector<NodeId> map2(Op op, const Fn& a, const Fn& b, const char* what) {
 
 // A relation over vectors is the conjunction of the componentwise relations.
 Fn relation(Op op, const Fn& a, const Fn& b, const char* what) {
-  const Fn parts = Fn::adopt(map2(op, a, b, what));
+  const Fn parts = detail::FnAccess::adopt(map2(op, a, b, what));
   Fn acc = parts[0];
   for (std::size_t j = 1; j < parts.dim(); ++j)
-    acc = Fn::adopt(dag::make(op == Op::Ne ? Op::Or : Op::And, acc.node(0), parts.node(j)));
+    acc = detail::FnAccess::adopt(dag::make(op == Op::Ne ? Op::Or : Op::And, acc.node(0), parts.node(j)));
   return acc;
 }
 
@@ -114,7 +116,7 @@ Fn Fn::operator[](std::size_t j) const {
   return Fn::of(nodes_[j]);
 }
 
-Fn x(int i) { return Fn::adopt(dag::var(i)); }
+Fn x(int i) { return detail::FnAccess::adopt(dag::var(i)); }
 
 Fn cat(std::span<const Fn> parts) {
   std::vector<NodeId> out;
@@ -123,15 +125,15 @@ Fn cat(std::span<const Fn> parts) {
 }
 Fn cat(std::initializer_list<Fn> parts) { return cat(std::span<const Fn>(parts.begin(), parts.size())); }
 
-Fn operator+(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Add, a, b, "+")); }
-Fn operator-(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Sub, a, b, "-")); }
-Fn operator*(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Mul, a, b, "*")); }
-Fn operator/(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Div, a, b, "/")); }
-Fn operator-(const Fn& a) { return Fn::adopt(map1(Op::Neg, a)); }
-Fn pow(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Pow, a, b, "pow")); }
-Fn atan2(const Fn& y, const Fn& x) { return Fn::adopt(map2(Op::Atan2, y, x, "atan2")); }
-Fn min(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Min, a, b, "min")); }
-Fn max(const Fn& a, const Fn& b) { return Fn::adopt(map2(Op::Max, a, b, "max")); }
+Fn operator+(const Fn& a, const Fn& b) { return detail::FnAccess::adopt(map2(Op::Add, a, b, "+")); }
+Fn operator-(const Fn& a, const Fn& b) { return detail::FnAccess::adopt(map2(Op::Sub, a, b, "-")); }
+Fn operator*(const Fn& a, const Fn& b) { return detail::FnAccess::adopt(map2(Op::Mul, a, b, "*")); }
+Fn operator/(const Fn& a, const Fn& b) { return detail::FnAccess::adopt(map2(Op::Div, a, b, "/")); }
+Fn operator-(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Neg, a)); }
+Fn pow(const Fn& a, const Fn& b) { return detail::FnAccess::adopt(map2(Op::Pow, a, b, "pow")); }
+Fn atan2(const Fn& y, const Fn& x) { return detail::FnAccess::adopt(map2(Op::Atan2, y, x, "atan2")); }
+Fn min(const Fn& a, const Fn& b) { return detail::FnAccess::adopt(map2(Op::Min, a, b, "min")); }
+Fn max(const Fn& a, const Fn& b) { return detail::FnAccess::adopt(map2(Op::Max, a, b, "max")); }
 
 Fn operator<(const Fn& a, const Fn& b) { return relation(Op::Lt, a, b, "<"); }
 Fn operator<=(const Fn& a, const Fn& b) { return relation(Op::Le, a, b, "<="); }
@@ -140,24 +142,24 @@ Fn operator>=(const Fn& a, const Fn& b) { return relation(Op::Ge, a, b, ">="); }
 Fn eq(const Fn& a, const Fn& b) { return relation(Op::Eq, a, b, "=="); }
 Fn ne(const Fn& a, const Fn& b) { return relation(Op::Ne, a, b, "!="); }
 
-Fn operator&&(const Fn& a, const Fn& b) { return Fn::adopt(dag::make(Op::And, scalar(a, "&&"), scalar(b, "&&"))); }
-Fn operator||(const Fn& a, const Fn& b) { return Fn::adopt(dag::make(Op::Or, scalar(a, "||"), scalar(b, "||"))); }
-Fn operator!(const Fn& a) { return Fn::adopt(dag::make(Op::Not, scalar(a, "!"))); }
+Fn operator&&(const Fn& a, const Fn& b) { return detail::FnAccess::adopt(dag::make(Op::And, scalar(a, "&&"), scalar(b, "&&"))); }
+Fn operator||(const Fn& a, const Fn& b) { return detail::FnAccess::adopt(dag::make(Op::Or, scalar(a, "||"), scalar(b, "||"))); }
+Fn operator!(const Fn& a) { return detail::FnAccess::adopt(dag::make(Op::Not, scalar(a, "!"))); }
 
-Fn square(const Fn& a) { return Fn::adopt(map1(Op::Square, a)); }
-Fn sqrt(const Fn& a) { return Fn::adopt(map1(Op::Sqrt, a)); }
-Fn exp(const Fn& a) { return Fn::adopt(map1(Op::Exp, a)); }
-Fn log(const Fn& a) { return Fn::adopt(map1(Op::Log, a)); }
-Fn sin(const Fn& a) { return Fn::adopt(map1(Op::Sin, a)); }
-Fn cos(const Fn& a) { return Fn::adopt(map1(Op::Cos, a)); }
-Fn tan(const Fn& a) { return Fn::adopt(map1(Op::Tan, a)); }
-Fn asin(const Fn& a) { return Fn::adopt(map1(Op::Asin, a)); }
-Fn acos(const Fn& a) { return Fn::adopt(map1(Op::Acos, a)); }
-Fn atan(const Fn& a) { return Fn::adopt(map1(Op::Atan, a)); }
-Fn abs(const Fn& a) { return Fn::adopt(map1(Op::Abs, a)); }
-Fn floor(const Fn& a) { return Fn::adopt(map1(Op::Floor, a)); }
-Fn ceil(const Fn& a) { return Fn::adopt(map1(Op::Ceil, a)); }
-Fn is_error(const Fn& h) { return Fn::adopt(dag::make(Op::IsError, scalar(h, "is_error"))); }
+Fn square(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Square, a)); }
+Fn sqrt(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Sqrt, a)); }
+Fn exp(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Exp, a)); }
+Fn log(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Log, a)); }
+Fn sin(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Sin, a)); }
+Fn cos(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Cos, a)); }
+Fn tan(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Tan, a)); }
+Fn asin(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Asin, a)); }
+Fn acos(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Acos, a)); }
+Fn atan(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Atan, a)); }
+Fn abs(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Abs, a)); }
+Fn floor(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Floor, a)); }
+Fn ceil(const Fn& a) { return detail::FnAccess::adopt(map1(Op::Ceil, a)); }
+Fn is_error(const Fn& h) { return detail::FnAccess::adopt(dag::make(Op::IsError, scalar(h, "is_error"))); }
 
 Fn select(const Fn& cond, const Fn& then_fn, const Fn& else_fn) {
   const NodeId c = scalar(cond, "select condition");
@@ -169,7 +171,7 @@ Fn select(const Fn& cond, const Fn& then_fn, const Fn& else_fn) {
   for (std::size_t j = 0; j < m; ++j)
     out.push_back(dag::make(Op::Select, c, then_fn.node(then_fn.dim() == 1 ? 0 : j),
                             else_fn.node(else_fn.dim() == 1 ? 0 : j)));
-  return Fn::adopt(std::move(out));
+  return detail::FnAccess::adopt(std::move(out));
 }
 
 Fn apply_custom(const std::shared_ptr<const CustomOp>& op, std::span<const Fn> args) {
@@ -186,7 +188,7 @@ Fn apply_custom(const std::shared_ptr<const CustomOp>& op, std::span<const Fn> a
     throw;
   }
   dag::release_custom(id);
-  return Fn::adopt(std::move(out));
+  return detail::FnAccess::adopt(std::move(out));
 }
 
 Fn apply_custom(const std::shared_ptr<const CustomOp>& op, std::initializer_list<Fn> args) {

@@ -3,6 +3,7 @@
 #include "tape_data.hpp"
 
 #include "custom_call.hpp"
+#include "derivative_rules.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
 #include "point_ops.hpp"
 
@@ -26,6 +27,18 @@ Tape custom_partials_tape(const CustomOp& op) {
   if (columns.empty()) columns.push_back(cat(std::vector<Fn>(static_cast<std::size_t>(op.num_outputs()), Fn(0.0))));
   return Tape(cat(columns), inputs);  // component k * num_outputs + j = d out_j / d arg_k
 }
+
+// Doubles as the algebra of derivative_rules.hpp.
+struct PointAlgebra {
+  using T = double;
+  static double c(double x) { return x; }
+  static double make(Op op, double a, double b = 0.0, double c = 0.0) { return detail::point_value(op, a, b, c); }
+  static bool zero(double x) { return x == 0.0; }
+  static double add(double x, double y) { return x + y; }
+  static double sub(double x, double y) { return x - y; }
+  static double mul(double x, double y) { return zero(x) || zero(y) ? 0.0 : x * y; }
+  static double div(double x, double y) { return zero(x) ? 0.0 : x / y; }
+};
 
 }  // namespace
 
@@ -80,7 +93,7 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
     const double k = imm ? konst[c.b] : 0.0;
     const double av = a[0], bv = imm ? k : b[0], cv = cc[0];
     double v;
-    // d = coefficient on a's partials, e = on b's, f = on c's (chain rule, one line per op).
+    // The coefficients of a's, b's and c's partials (the chain rule).
     double da = 0.0, db = 0.0, dc = 0.0;
     switch (c.op) {
       case Op::Const: v = konst[c.a]; break;
@@ -88,49 +101,23 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
       case Op::CallOut: v = slots_[std::size_t{c.a} * stride]; break;
       default: v = detail::point_value(c.op, av, bv, cv); break;
     }
-    switch (c.op) {
-      case Op::Neg: da = -1.0; break;
-      case Op::Square: da = 2.0 * av; break;
-      case Op::Sqrt: da = 0.5 / v; break;
-      case Op::Exp: da = v; break;
-      case Op::Log: da = 1.0 / av; break;
-      case Op::Sin: da = std::cos(av); break;
-      case Op::Cos: da = -std::sin(av); break;
-      case Op::Tan: da = 1.0 + v * v; break;
-      case Op::Asin: da = 1.0 / std::sqrt(1.0 - av * av); break;
-      case Op::Acos: da = -1.0 / std::sqrt(1.0 - av * av); break;
-      case Op::Atan: da = 1.0 / (1.0 + av * av); break;
-      case Op::Abs: da = av < 0.0 ? -1.0 : 1.0; break;
-      case Op::Add: da = 1.0; db = 1.0; break;
-      case Op::Sub: da = 1.0; db = -1.0; break;
-      case Op::Mul: da = bv; db = av; break;
-      case Op::Div: da = 1.0 / bv; db = -v / bv; break;
-      case Op::Pow:
-        da = bv * std::pow(av, bv - 1.0);
-        db = av > 0.0 ? v * std::log(av) : 0.0;
-        break;
-      case Op::Atan2: {
-        const double r2 = av * av + bv * bv;
-        da = bv / r2;
-        db = -av / r2;
-        break;
+    if (is_arithmetic(c.op)) {
+      // The coefficients of the rule (derivative_rules.hpp): operand k's is the rule with
+      // derivative 1 for k and 0 for the others. An immediate form is its DAG opcode with the
+      // constant as the other operand.
+      const detail::DagForm form = detail::dag_form_of_immediate(c.op);
+      const double x = form.swapped ? bv : av, y = form.swapped ? av : bv;
+      PointAlgebra m;
+      auto coefficient = [&](int k) {
+        return detail::derivative_rule(m, form.op, v, x, y, k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0);
+      };
+      if (imm) {
+        da = coefficient(form.swapped ? 1 : 0);
+      } else {
+        if (ar >= 1) da = coefficient(0);
+        if (ar >= 2) db = coefficient(1);
+        if (ar >= 3) dc = coefficient(2);
       }
-      case Op::Min: (av < bv ? da : db) = 1.0; break;
-      case Op::Max: (av > bv ? da : db) = 1.0; break;
-      case Op::Select: (av != 0.0 ? db : dc) = 1.0; break;
-      case Op::AddImm: da = 1.0; break;
-      case Op::MulImm: da = k; break;
-      case Op::SubImm: da = -1.0; break;
-      case Op::DivImmR: da = 1.0 / k; break;
-      case Op::DivImmL: da = -v / av; break;
-      case Op::MinImm: da = av < k ? 1.0 : 0.0; break;
-      case Op::MaxImm: da = av > k ? 1.0 : 0.0; break;
-      // Piecewise constant: derivative 0 wherever it exists.
-      case Op::Floor: case Op::Ceil: case Op::Not: case Op::IsError: case Op::Lt: case Op::Le: case Op::Gt:
-      case Op::Ge: case Op::Eq: case Op::Ne: case Op::And: case Op::Or:
-      // Leaves and plumbing: set below.
-      case Op::Const: case Op::Var: case Op::Custom: case Op::Load: case Op::Call: case Op::CallOut:
-        break;
     }
     // Partials into a temporary first: `out` may alias an operand.
     double* g = scratch_.data();

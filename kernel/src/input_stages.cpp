@@ -2,7 +2,7 @@
 // input_stages.hpp).
 #include "genmod/kernel/input_stages.hpp"
 
-#include "genmod/kernel/dag.hpp"
+#include "dag.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -2,6 +2,7 @@
 #include "genmod/kernel/tape.hpp"
 
 #include "genmod/kernel/custom_op.hpp"
+#include "dag.hpp"
 #include "tape_data.hpp"
 
 #include <algorithm>

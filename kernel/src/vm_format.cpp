@@ -3,6 +3,8 @@
 #include "genmod/kernel/custom_op.hpp"
 #include "genmod/kernel/number_text.hpp"
 
+#include "dag.hpp"
+
 #include <cstdlib>
 #include <algorithm>
 #include <array>

@@ -4,6 +4,7 @@
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
+#include "kernel/src/dag.hpp"  // white-box: the store's sharing and simplifications
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // loop that builds, evaluates and drops shapes runs in flat memory, and ids reused after a
 // reclamation never return a stale node.
 #include "genmod/kernel/custom_op.hpp"
-#include "genmod/kernel/dag.hpp"
+#include "kernel/src/dag.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/gradient_evaluator.hpp"
 #include "genmod/kernel/inclusion.hpp"

@@ -3,11 +3,14 @@
 
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/interval.hpp"
+#include "genmod/kernel/opcode.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace genmod::testing {
@@ -26,9 +29,44 @@ inline std::vector<OpInfo> all_dag_ops() {
   return ops;
 }
 
+// The opcode applied through the public Fn API (one function or operator per opcode).
 inline Fn apply_op(Op op, const Fn& a, const Fn& b = Fn(), const Fn& c = Fn()) {
-  const int n = arity(op);
-  return Fn::adopt(dag::make(op, a.node(0), n >= 2 ? b.node(0) : kNoNode, n >= 3 ? c.node(0) : kNoNode));
+  switch (op) {
+    case Op::Neg: return -a;
+    case Op::Square: return square(a);
+    case Op::Sqrt: return sqrt(a);
+    case Op::Exp: return exp(a);
+    case Op::Log: return log(a);
+    case Op::Sin: return sin(a);
+    case Op::Cos: return cos(a);
+    case Op::Tan: return tan(a);
+    case Op::Asin: return asin(a);
+    case Op::Acos: return acos(a);
+    case Op::Atan: return atan(a);
+    case Op::Abs: return abs(a);
+    case Op::Floor: return floor(a);
+    case Op::Ceil: return ceil(a);
+    case Op::Not: return !a;
+    case Op::IsError: return is_error(a);
+    case Op::Add: return a + b;
+    case Op::Sub: return a - b;
+    case Op::Mul: return a * b;
+    case Op::Div: return a / b;
+    case Op::Pow: return pow(a, b);
+    case Op::Atan2: return atan2(a, b);
+    case Op::Min: return min(a, b);
+    case Op::Max: return max(a, b);
+    case Op::Lt: return a < b;
+    case Op::Le: return a <= b;
+    case Op::Gt: return a > b;
+    case Op::Ge: return a >= b;
+    case Op::Eq: return eq(a, b);
+    case Op::Ne: return ne(a, b);
+    case Op::And: return a && b;
+    case Op::Or: return a || b;
+    case Op::Select: return select(a, b, c);
+    default: throw std::invalid_argument("apply_op: not an arithmetic DAG opcode: " + std::string(op_name(op)));
+  }
 }
 
 class RandomFunctions {

@@ -2,7 +2,7 @@
 // profile-product invariants (research/snyder.md 7.1-7.4), overrides change the shape, and
 // bad names are reported.
 #include "genmod/models/gallery.hpp"
-#include "genmod/kernel/dag.hpp"
+#include "genmod/kernel/expression.hpp"
 
 #include "models/model_testing.hpp"
 
@@ -144,14 +144,14 @@ TEST(LampStand, IsAProfileProductOfAStarShapedClosedCross) {
 // build of the patio tile threw "too many custom operators" for the rest of the process. Now
 // what a dropped model held is reclaimed.
 TEST(Gallery, BuildingAModelSeventyThousandTimesLeavesNothingBehind) {
-  const std::size_t nodes = dag::size(), ops = dag::custom_count();
+  const std::size_t nodes = live_nodes(), ops = live_custom_operators();
   const Model& tile = find_model("patio_tile");
   for (int i = 0; i < 70000; ++i) {
     const Fn f = build_model(tile);
     ASSERT_EQ(f.dim(), 3u);
   }
-  EXPECT_EQ(dag::size(), nodes);
-  EXPECT_EQ(dag::custom_count(), ops);
+  EXPECT_EQ(live_nodes(), nodes);
+  EXPECT_EQ(live_custom_operators(), ops);
 }
 
 TEST(Gallery, OverridesChangeTheShape) {

@@ -1,4 +1,4 @@
-// One node of a function's expression, read without the store's internals (dag.hpp): the
+// One node of a function's expression, read without the store's internals: the
 // opcode at the root of a scalar Fn and its operands as Fns. Layers above the kernel walk and
 // rewrite expressions with it (a constraint's and / or skeleton and its relations) and build
 // the new ones with Fn arithmetic, which applies the store's usual simplifications.
@@ -37,5 +37,10 @@ Expression expression(const Fn& f);
 
 // The number of distinct nodes of f's expression (shared subexpressions count once).
 std::size_t count_nodes(const Fn& f);
+
+// The number of live nodes in the store, and of live custom operators: what the shapes that
+// are still held take (the store reclaims the rest; see NodeId in fn.hpp).
+std::size_t live_nodes() noexcept;
+std::size_t live_custom_operators() noexcept;
 
 }  // namespace genmod

@@ -14,7 +14,6 @@
 #pragma once
 
 #include "genmod/kernel/coordinates.hpp"
-#include "genmod/kernel/dag.hpp"
 
 #include <concepts>
 #include <cstdint>
@@ -23,6 +22,20 @@
 #include <vector>
 
 namespace genmod {
+
+// The id of a scalar node of the process-wide expression store. Nodes are hash-consed:
+// structurally equal live nodes share one id, so f.node(j) is a cache key for the function it
+// computes while an Fn holds it. Fn values may be built, copied and dropped from any number of
+// threads at once. A node, and a custom operator, is reclaimed as soon as no Fn (and no node
+// above it) holds it any more, and its id may then be reused: a loop that builds and drops
+// shapes runs in flat memory. live_nodes() (expression.hpp) counts the store's nodes.
+using NodeId = std::uint32_t;
+// Parametric coordinates are x(0) .. x(kMaxInputs - 1).
+inline constexpr int kMaxInputs = 64;
+
+namespace detail {
+struct FnAccess;  // the kernel's construction from the store's own references
+}
 
 class Fn {
  public:
@@ -37,14 +50,11 @@ class Fn {
   // A bool never becomes a function: `Fn c = (f == g)` with a C++ comparison in it is a
   // mistake, caught at compile time.
   Fn(bool) = delete;
-  // A function with the given component nodes (at least one, each live), taking a reference
-  // of its own on each (the ids are borrowed; see dag.hpp, Lifetime).
+  // A function with the given component nodes (at least one, each live: ids read from an Fn
+  // that is alive), taking a reference of its own on each.
   explicit Fn(std::vector<NodeId> components);
-  // The scalar function of one DAG node (borrowed, like the constructor).
+  // The scalar function of one node (read from a live Fn, like the constructor's).
   static Fn of(NodeId node) { return Fn(std::vector<NodeId>{node}); }
-  // A function that takes over the new references `owned` (what dag::make returns).
-  static Fn adopt(std::vector<NodeId> owned);
-  static Fn adopt(NodeId owned) { return adopt(std::vector<NodeId>{owned}); }
 
   // An Fn holds one reference per component: copies add them, destruction gives them back.
   Fn(const Fn& other);
@@ -71,8 +81,13 @@ class Fn {
   friend bool identical(const Fn& a, const Fn& b) noexcept { return a.nodes_ == b.nodes_; }
 
  private:
+  friend struct detail::FnAccess;
   struct Adopt {};
   Fn(Adopt, std::vector<NodeId> owned) noexcept : nodes_(std::move(owned)) {}
+  // A function that takes over the new references `owned` (what the store's constructors
+  // return; kernel/src/dag.hpp).
+  static Fn adopt(std::vector<NodeId> owned);
+  static Fn adopt(NodeId owned) { return adopt(std::vector<NodeId>{owned}); }
   void release() noexcept;
 
   std::vector<NodeId> nodes_;

@@ -3,7 +3,6 @@
 
 #include "genmod/kernel/batch_evaluator.hpp"
 #include "genmod/kernel/custom_op.hpp"
-#include "genmod/kernel/dag.hpp"
 #include "genmod/kernel/expression.hpp"
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/gradient_evaluator.hpp"

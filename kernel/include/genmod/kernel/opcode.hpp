@@ -3,7 +3,8 @@
 // GENMOD_OPCODES is the one table of opcodes: every property below (the enum, names, arity,
 // flags) is generated from it, and every evaluator dispatches over it, so an opcode's row here
 // and its rules (kernel/src/point_ops.hpp: point; interval_evaluator.cpp: enclosure;
-// derivative.cpp and gradient_evaluator.cpp: derivative; tape_contractor.cpp: HC4 projection)
+// derivative_rules.hpp: derivative, symbolic and forward mode; tape_contractor.cpp: HC4
+// projection)
 // are all there is to an opcode. The evaluators' switches have no default case, so a new row
 // without a rule fails to compile (-Werror=switch).
 #pragma once

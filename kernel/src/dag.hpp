@@ -11,13 +11,14 @@
 //    reclaimed at once (its id may be reused), and so is everything only it held; a custom
 //    operator is destroyed when no node applies it any more.
 //  * The functions below that return a NodeId (constant, var, make, make_custom) return a *new
-//    reference* owned by the caller: hand it to Fn::adopt, or give it back with release().
+//    reference* owned by the caller: hand it to an Fn (detail::FnAccess::adopt), or give it back with release().
 //    A NodeId read from an Fn or a node (f.node(j), n.arg[k]) is *borrowed*: valid while the
 //    Fn or node that holds it lives; Fn(ids) and Fn::of(id) take a reference of their own.
 //  * Tapes keep the custom operators they call alive (they never refer to nodes).
 // A reference that is never given back is a leak, never a dangling id, so mistakes fail safe.
 #pragma once
 
+#include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/opcode.hpp"
 
 #include <cstdint>
@@ -29,10 +30,7 @@ namespace genmod {
 
 class CustomOp;
 
-using NodeId = std::uint32_t;
 inline constexpr NodeId kNoNode = 0xffffffffu;
-// Parametric coordinates are x(0) .. x(kMaxInputs - 1).
-inline constexpr int kMaxInputs = 64;
 
 struct Node {
   Op op;
@@ -113,4 +111,12 @@ class Refs {
 };
 
 }  // namespace dag
+namespace detail {
+// An Fn that takes over new references (what constant, var, make and make_custom return).
+struct FnAccess {
+  static Fn adopt(std::vector<NodeId> owned) { return Fn::adopt(std::move(owned)); }
+  static Fn adopt(NodeId owned) { return Fn::adopt(owned); }
+};
+}  // namespace detail
+
 }  // namespace genmod
