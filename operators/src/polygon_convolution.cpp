@@ -47,9 +47,8 @@ bool inside(const std::vector<Vec2>& poly, const Vec2& q) {
   return in;
 }
 
-// The per-vertex weights interpolated at q by mean value coordinates (defined for any simple
-// polygon; exact on the edges and at the vertices).
-double interpolate_weights(const std::vector<Vec2>& poly, const std::vector<double>& w, const Vec2& q) {
+// The mean value coordinates of q (Floater's tangent form) applied to the values w.
+double mean_value_interpolation(const std::vector<Vec2>& poly, const std::vector<double>& w, const Vec2& q) {
   const std::size_t n = poly.size();
   std::vector<Vec2> d(n);
   std::vector<double> r(n);
@@ -73,6 +72,17 @@ double interpolate_weights(const std::vector<Vec2>& poly, const std::vector<doub
     total += lambda;
   }
   return sum / total;
+}
+
+// The per-vertex weights interpolated at q by mean value coordinates (defined inside any
+// simple polygon; exact on the edges and at the vertices). In a concave polygon some
+// coordinates are negative and the value can overshoot the weights, so it is clamped to
+// their range (and a self-intersecting polygon, where the coordinates can cancel, gets the
+// clamp's lower end instead of a NaN).
+double interpolate_weights(const std::vector<Vec2>& poly, const std::vector<double>& w, const Vec2& q) {
+  const auto [lo, hi] = std::minmax_element(w.begin(), w.end());
+  const double v = mean_value_interpolation(poly, w, q);
+  return std::isfinite(v) ? std::clamp(v, *lo, *hi) : *lo;
 }
 
 }  // namespace

@@ -201,6 +201,22 @@ TEST(PolygonConvolution, WideSquareImageIsOneInsideHalfOnAnEdgeZeroFarAway) {
   EXPECT_NEAR(at(polygon_convolution_surface({square(0, 0, 4)}, kR, {.resolution = 200}), 4.0, 2.0, 0), 0.0, 0.01);
 }
 
+TEST(PolygonConvolution, PerVertexWeightsScaleTheImage) {
+  // Equal weights c scale the image by c; on a large triangle with weights (1, 0, 0) the
+  // interior image follows the barycentric ramp (mean value coordinates are barycentric on a
+  // triangle), 2/3 of the way from the light edge toward the heavy vertex = 2/3.
+  const std::vector<Point3> tri = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}};
+  const ConvolutionImage plain({tri, {}}, kR, {.resolution = 120});
+  const ConvolutionImage half({tri, {0.5, 0.5, 0.5}}, kR, {.resolution = 120});
+  for (int j = 0; j < plain.height(); j += 3)
+    for (int i = 0; i < plain.width(); i += 3) ASSERT_NEAR(half.sample(i, j), 0.5 * plain.sample(i, j), 1e-14);
+  const Fn ramp = ConvolutionImage({tri, {1, 0, 0}}, kR, {.resolution = 240}).lookup();
+  // A linear ramp filters to itself (the B-spline is symmetric) away from the edges.
+  EXPECT_NEAR(at(ramp, 4.0 / 3, 4.0 / 3, 0), 1.0 / 3, 0.01);
+  EXPECT_NEAR(at(ramp, 0.8, 0.8, 0), 0.6, 0.01);
+  EXPECT_NEAR(at(ramp, 0.8, 2.0, 0), 0.3, 0.01);
+}
+
 // ---- the chapter's claims ------------------------------------------------------------------
 
 // The height of the surface f = 1/2 - D above the centre of a square of side w (units of r).

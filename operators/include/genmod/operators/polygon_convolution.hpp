@@ -20,7 +20,7 @@
 // along pixel rows: less rasterization error than an arbitrary orthogonal vector); the y axis
 // completes the right-handed frame (x, y, normal); the image spans the polygon's 2-D bounds plus a
 // margin of 2 extents on each side, where extent = 2.769 r is the kernel's support radius;
-// `resolution` pixels cover the longer side of that square, and the filter's support is
+// `resolution` pixels cover the longer side of that rectangle, and the filter's support is
 // resolution-scale * extent pixels.
 //
 // Density convention: D is a density (positive, larger inside). `polygon_convolution_surface`
@@ -60,10 +60,11 @@ class CustomOp;
 
 // A planar polygon (a closed loop of vertices; the even-odd rule decides inside) with
 // optional per-vertex weights (empty: weight 1 everywhere; else one finite weight >= 0 per
-// vertex, interpolated over the polygon by mean value coordinates).
+// vertex, interpolated over the polygon by mean value coordinates, clamped to the weights'
+// range).
 struct SkeletalPolygon {
-  std::vector<Point3> vertices;
-  std::vector<double> weights;
+  std::vector<Point3> vertices{};
+  std::vector<double> weights{};
 };
 
 struct PolygonImageOptions {
