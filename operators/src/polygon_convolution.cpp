@@ -85,6 +85,83 @@ double interpolate_weights(const std::vector<Vec2>& poly, const std::vector<doub
   return std::isfinite(v) ? std::clamp(v, *lo, *hi) : *lo;
 }
 
+// True if no two non-adjacent edges meet and no two adjacent ones overlap (orientation tests;
+// O(n^2), run once per image).
+bool is_simple(const std::vector<Vec2>& poly) {
+  const std::size_t n = poly.size();
+  auto orient = [](const Vec2& a, const Vec2& b, const Vec2& c) {
+    const double v = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    return (v > 0) - (v < 0);
+  };
+  auto on_segment = [](const Vec2& a, const Vec2& b, const Vec2& c) {  // c collinear with ab
+    return std::min(a[0], b[0]) <= c[0] && c[0] <= std::max(a[0], b[0]) && std::min(a[1], b[1]) <= c[1] &&
+           c[1] <= std::max(a[1], b[1]);
+  };
+  auto meet = [&](const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+    const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+    if (o1 * o2 < 0 && o3 * o4 < 0) return true;  // a proper crossing
+    return (o1 == 0 && on_segment(a, b, c)) || (o2 == 0 && on_segment(a, b, d)) || (o3 == 0 && on_segment(c, d, a)) ||
+           (o4 == 0 && on_segment(c, d, b));
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec2 &a = poly[i], &b = poly[(i + 1) % n];
+    if (a == b) return false;
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const Vec2 &c = poly[j], &d = poly[(j + 1) % n];
+      const bool adjacent = j == i + 1 || (i == 0 && j == n - 1);
+      if (!adjacent && meet(a, b, c, d)) return false;
+      // Adjacent edges share one vertex; they must not fold back onto each other.
+      if (adjacent) {
+        const Vec2& shared = j == i + 1 ? b : a;
+        const Vec2& p = j == i + 1 ? a : b;
+        const Vec2& q = j == i + 1 ? d : c;
+        if (orient(p, shared, q) == 0 &&
+            (q[0] - shared[0]) * (p[0] - shared[0]) + (q[1] - shared[1]) * (p[1] - shared[1]) > 0)
+          return false;
+      }
+    }
+  }
+  return true;
+}
+
+// The area and centroid of the part of the simple polygon inside the axis-aligned square
+// [x0, x1] x [y0, y1]: Sutherland-Hodgman clipping against the square's four sides (exact for
+// a convex window, leaving only zero-area bridges where a concave polygon is cut), then the
+// shoelace formula. Returns the unsigned area; centroid is set when the area is positive.
+double clipped_area(const std::vector<Vec2>& poly, double x0, double x1, double y0, double y1, Vec2& centroid,
+                    std::vector<Vec2>& a, std::vector<Vec2>& b) {
+  a = poly;
+  for (int side = 0; side < 4 && !a.empty(); ++side) {
+    const int axis = side / 2;
+    const double bound = side == 0 ? x0 : side == 1 ? x1 : side == 2 ? y0 : y1;
+    const bool keep_above = side % 2 == 0;
+    auto in = [&](const Vec2& p) { return keep_above ? p[axis] >= bound : p[axis] <= bound; };
+    b.clear();
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const Vec2 &p = a[i], &q = a[(i + 1) % a.size()];
+      const bool pin = in(p), qin = in(q);
+      if (pin) b.push_back(p);
+      if (pin != qin) {
+        const double t = (bound - p[axis]) / (q[axis] - p[axis]);
+        Vec2 r{p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])};
+        r[axis] = bound;
+        b.push_back(r);
+      }
+    }
+    std::swap(a, b);
+  }
+  double area2 = 0, cx = 0, cy = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Vec2 &p = a[i], &q = a[(i + 1) % a.size()];
+    const double c = p[0] * q[1] - q[0] * p[1];
+    area2 += c;
+    cx += (p[0] + q[0]) * c;
+    cy += (p[1] + q[1]) * c;
+  }
+  if (area2 != 0) centroid = {cx / (3 * area2), cy / (3 * area2)};
+  return std::abs(area2) / 2;
+}
+
 }  // namespace
 
 ConvolutionImage::ConvolutionImage(const SkeletalPolygon& polygon, double radius, const PolygonImageOptions& options) {
@@ -163,23 +240,37 @@ ConvolutionImage::ConvolutionImage(const SkeletalPolygon& polygon, double radius
   const int w = static_cast<int>(std::ceil(span[0] * scale_ - 1e-9)) + 1;
   const int h = static_cast<int>(std::ceil(span[1] * scale_ - 1e-9)) + 1;
 
-  // Coverage: the fraction of a pixel's s x s subsamples (the pixel centred on the node) that
-  // fall inside, times the interpolated weight at each.
+  // Coverage of the pixel centred on each node: for a simple polygon the exact area of the
+  // polygon inside the pixel (so edges fall where they are, not where subsamples are),
+  // times the interpolated weight at the centroid of that area; otherwise the fraction of
+  // s x s subsamples inside by the even-odd rule, times the weight at each.
   std::vector<double> image(static_cast<std::size_t>(w) * h, 0.0);
+  const bool simple = is_simple(poly);
   const int s = options.supersampling;
   const int i0 = std::max(0, static_cast<int>(std::floor((mn[0] - corner[0]) * scale_)) - 1);
   const int i1 = std::min(w - 1, static_cast<int>(std::ceil((mx[0] - corner[0]) * scale_)) + 1);
   const int j0 = std::max(0, static_cast<int>(std::floor((mn[1] - corner[1]) * scale_)) - 1);
   const int j1 = std::min(h - 1, static_cast<int>(std::ceil((mx[1] - corner[1]) * scale_)) + 1);
+  const double pixel = 1 / scale_;
+  std::vector<Vec2> work_a, work_b;
   for (int j = j0; j <= j1; ++j)
     for (int i = i0; i <= i1; ++i) {
-      double sum = 0;
-      for (int b = 0; b < s; ++b)
-        for (int a = 0; a < s; ++a) {
-          const Vec2 q{corner[0] + (i + (a + 0.5) / s - 0.5) / scale_, corner[1] + (j + (b + 0.5) / s - 0.5) / scale_};
-          if (inside(poly, q)) sum += polygon.weights.empty() ? 1.0 : interpolate_weights(poly, polygon.weights, q);
-        }
-      image[static_cast<std::size_t>(j) * w + i] = sum / (s * s);
+      const double cx = corner[0] + i * pixel, cy = corner[1] + j * pixel;
+      double value = 0;
+      if (simple) {
+        Vec2 piece{cx, cy};
+        const double area = clipped_area(poly, cx - pixel / 2, cx + pixel / 2, cy - pixel / 2, cy + pixel / 2, piece, work_a, work_b);
+        value = std::min(area / (pixel * pixel), 1.0);
+        if (value > 0 && !polygon.weights.empty()) value *= interpolate_weights(poly, polygon.weights, piece);
+      } else {
+        for (int b = 0; b < s; ++b)
+          for (int a = 0; a < s; ++a) {
+            const Vec2 q{cx + ((a + 0.5) / s - 0.5) * pixel, cy + ((b + 0.5) / s - 0.5) * pixel};
+            if (inside(poly, q)) value += polygon.weights.empty() ? 1.0 : interpolate_weights(poly, polygon.weights, q);
+          }
+        value /= s * s;
+      }
+      image[static_cast<std::size_t>(j) * w + i] = value;
     }
 
   // The separable filter: the B-spline over its support in pixels, normalized to unit sum so

@@ -29,6 +29,14 @@ constexpr double kR = 0.1;
 
 double at(const Fn& f, double x, double y, double z) { return evaluate(f, std::vector<double>{x, y, z})[0]; }
 
+// f compiled once, for many evaluations.
+struct Compiled {
+  explicit Compiled(const Fn& f) : tape(f, std::vector<int>{0, 1, 2}) {}
+  double operator()(double x, double y, double z) { return pv.eval(tape, std::vector<double>{x, y, z})[0]; }
+  Tape tape;
+  PointEvaluator pv;
+};
+
 SkeletalPolygon square(double x0, double y0, double side, double z = 0) {
   return {{{x0, y0, z}, {x0 + side, y0, z}, {x0 + side, y0 + side, z}, {x0, y0 + side, z}}, {}};
 }
@@ -217,6 +225,20 @@ TEST(PolygonConvolution, PerVertexWeightsScaleTheImage) {
   EXPECT_NEAR(at(ramp, 0.8, 2.0, 0), 0.3, 0.01);
 }
 
+TEST(PolygonConvolution, SelfIntersectingPolygonFollowsTheEvenOddRule) {
+  // A pentagram: its tips are inside, its central pentagon (wound twice) is outside, as the
+  // subsampled coverage of a non-simple polygon decides.
+  SkeletalPolygon star;
+  for (int k = 0; k < 5; ++k) {
+    const double t = 3.14159265358979 / 2 + k * 4 * 3.14159265358979 / 5;
+    star.vertices.push_back({4 * std::cos(t), 4 * std::sin(t), 0});
+  }
+  const Fn I = ConvolutionImage(star, 0.05, {.resolution = 200}).lookup();
+  EXPECT_NEAR(at(I, 0, 0, 0), 0.0, 1e-9);          // the centre, 1.2 from the inner edges
+  EXPECT_NEAR(at(I, 0, 3.0, 0), 1.0, 1e-9);        // inside the top tip
+  EXPECT_NEAR(at(I, 0, 4.5, 0), 0.0, 1e-9);        // beyond it
+}
+
 // ---- the chapter's claims ------------------------------------------------------------------
 
 // The height of the surface f = 1/2 - D above the centre of a square of side w (units of r).
@@ -255,11 +277,42 @@ TEST(PolygonConvolution, AbuttingCoplanarPolygonsGiveASeamlessPlateau) {
   for (double x = 0.7; x <= 1.3; x += 0.01)
     for (double z : {0.0, 0.5 * kR, kR}) worst = std::max(worst, std::abs(at(d2, x, 0.5, z) - at(d1, x, 0.5, z)));
   std::printf("abutting squares vs one rectangle: largest density difference %.3g\n", worst);
-  EXPECT_LT(worst, 0.02);
+  EXPECT_LT(worst, 0.01);
   // And the plateau is flat across the seam: the surface height stays r.
   const Fn f2 = density_to_implicit(d2);
   for (double x : {0.8, 0.95, 1.0, 1.05, 1.2})
     EXPECT_NEAR(root([&](double z) { return at(f2, x, 0.5, z); }, 0.0, 2.769 * kR), kR, 0.002);
+}
+
+TEST(PolygonConvolution, Claim39WideSquareAgainstTheAnalyticConvolution) {
+  // research/bloomenthal.md §11 claim 39 with the B-spline kernel: the separable kernel
+  // factorizes the convolution of a rectangle, D = h(z) [C(s (x1 - x) / r) - C(s (x0 - x) / r)]
+  // [same in y], C the kernel's CDF and s = 0.72235. For a square of side 6 r: D = 1/2 at the
+  // edge midpoints in the plane, the surface at height r above the centre, and the image at
+  // 80 x 80 within 1% of the maximum of the analytic density everywhere.
+  const double a = 3 * kR, sc = 2 / kernel_support(Kernel::bspline);
+  const Fn X = x(0), Y = x(1), Z = x(2);
+  const Fn exact = 1.5 * bspline_kernel(Z * (sc / kR)) * (bspline_cdf((a - X) * (sc / kR)) - bspline_cdf((-a - X) * (sc / kR))) *
+                   (bspline_cdf((a - Y) * (sc / kR)) - bspline_cdf((-a - Y) * (sc / kR)));
+  const std::vector<SkeletalPolygon> sq = {square(-a, -a, 2 * a)};
+  const Fn d = polygon_convolution(sq, kR, {.resolution = 80});
+  Compiled dc(d), ec(exact);
+  double worst = 0, peak = 0;
+  for (double px = -0.65; px <= 0.65; px += 0.0125)
+    for (double py = -0.65; py <= 0.65; py += 0.0125)
+      for (double pz : {0.0, 0.05, 0.1, 0.2}) {
+        worst = std::max(worst, std::abs(dc(px, py, pz) - ec(px, py, pz)));
+        peak = std::max(peak, ec(px, py, pz));
+      }
+  double edge = 0;
+  for (const auto& m : {std::array<double, 2>{a, 0}, {-a, 0}, {0, a}, {0, -a}}) edge = std::max(edge, std::abs(at(d, m[0], m[1], 0) - 0.5));
+  const Fn f = density_to_implicit(d);
+  const double height = root([&](double z) { return at(f, 0, 0, z); }, 0.0, 2.769 * kR) / kR;
+  std::printf("claim 39 at 80 x 80: largest |D - exact| %.5f (peak %.3f), edge midpoints |D - 1/2| %.5f, height %.5f r\n",
+              worst, peak, edge, height);
+  EXPECT_LT(worst, 0.01 * peak);
+  EXPECT_LT(edge, 1e-3);
+  EXPECT_NEAR(height, 1.0, 0.01);
 }
 
 // Surface positions that the resolution affects: the height above interior points and the
@@ -294,8 +347,8 @@ TEST(PolygonConvolution, ResolutionEightyIsEnoughAndLowResolutionsShiftTheSurfac
     error[k] = largest_difference(triangle_surface(res[k]), reference);
     std::printf("resolution %3d: largest surface shift %.5f (%.3f r)\n", res[k], error[k], error[k] / kR);
   }
-  // Measured (largest shift from 320 x 320, units of r): 80: 0.019, 40: 0.054, 20: 0.22,
-  // 10: 0.63, 5: 2.1. So 80 x 80 is within 3% of r of the limit and 40 x 40 within 8% (the
+  // Measured (largest shift from 320 x 320, units of r): 80: 0.013, 40: 0.058, 20: 0.23,
+  // 10: 0.74, 5: 2.4. So 80 x 80 is within 3% of r of the limit and 40 x 40 within 8% (the
   // two agree within 8%); below 40 the shift is a fifth of r and more, and it grows as the
   // resolution drops.
   EXPECT_LT(largest_difference(triangle_surface(80), triangle_surface(40)), 0.08 * kR);

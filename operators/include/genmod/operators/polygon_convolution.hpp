@@ -7,8 +7,8 @@
 //   D(p) = k * h(q_z) * I(q_xy),   h(z) = 1.5 h_B(0.72235 z / r)  (h(0) = 1, h(r) = 1/2)
 //
 // with q = p in the polygon's frame: q_z the signed distance to its plane, q_xy the image
-// coordinates. I is the polygon rasterized into a real-valued image (coverage of each pixel,
-// times the per-vertex weights interpolated with mean value coordinates when given) and
+// coordinates. I is the polygon rasterized into a real-valued image (the area of each pixel
+// it covers, times the per-vertex weights interpolated with mean value coordinates when given) and
 // filtered with the same B-spline at the same scale, normalized to unit total weight, so the
 // image of a large polygon is 1 in its interior and 1/2 on a long straight edge; far from the
 // edges D -> k h(q_z), and the iso-surface D = 1/2 lies at distance r from a wide polygon.
@@ -78,7 +78,8 @@ struct PolygonImageOptions {
   double planarity_tolerance = 1e-3;
   // The image's x axis (projected into the plane); default: the first edge's direction.
   std::optional<Point3> x_axis{};
-  // Subsamples per pixel side of the coverage rasterization (1 = point sampling).
+  // Subsamples per pixel side of the coverage of a self-intersecting polygon (1 = point
+  // sampling); a simple polygon's coverage is the exact area inside each pixel.
   int supersampling = 4;
 };
 
