@@ -10,6 +10,9 @@
 //  * BM_PolygonInterval/<res>/<side>: IntervalEvaluator on the density's tape over 256 cubes of
 //    side <side>/1000 centred near the polygon (cube 0.01: a few pixels; 0.1: tens; 1.0:
 //    the whole image).
+//  * BM_PolygonFieldInterval/<culled>/<n>: IntervalEvaluator over 256 cubes of side 0.02 near a
+//    field of n small quads (a sqrt(n) x sqrt(n) grid over [-2, 2]^2, r = 0.02, 30 pixels),
+//    as the plain sum (culled = 0) or a culled field of polygon_element (culled = 1).
 //  * BM_ImageRange/<res>/<pixels> against BM_ImageBruteHull/<res>/<pixels>: the enclosure of
 //    the image over 256 square pixel rectangles <pixels> wide, by the pyramid and by scanning
 //    the samples (what the pyramid saves: O(log^2 n) block reads instead of <pixels>^2).
@@ -17,12 +20,14 @@
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
 #include "genmod/operators/convolution.hpp"
+#include "genmod/operators/culled_field.hpp"
 #include "genmod/operators/polygon_convolution.hpp"
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -82,6 +87,44 @@ void BM_PolygonInterval(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(ps.size()));
 }
 
+std::vector<SkeletalPolygon> quad_grid(int n) {
+  const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(n))));
+  const double pitch = 4.0 / side;
+  std::vector<SkeletalPolygon> ps;
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      const double x0 = -2 + i * pitch, y0 = -2 + j * pitch, z = 0.05 * ((i + j) % 3);
+      ps.push_back({{{x0, y0, z}, {x0 + 0.6 * pitch, y0, z}, {x0 + 0.6 * pitch, y0 + 0.6 * pitch, z}, {x0, y0 + 0.6 * pitch, z}}, {}});
+    }
+  return ps;
+}
+
+void BM_PolygonFieldInterval(benchmark::State& state) {
+  const auto polys = quad_grid(static_cast<int>(state.range(1)));
+  Fn d;
+  if (state.range(0) == 0) {
+    d = polygon_convolution(polys, 0.02, {.resolution = 30});
+  } else {
+    std::vector<FieldElement> es;
+    for (const auto& p : polys) es.push_back(polygon_element(p, 0.02, {.resolution = 30}));
+    d = culled_field(es);
+  }
+  const int xyz[3] = {0, 1, 2};
+  const Tape tape(d, xyz);
+  IntervalEvaluator iv;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-2, 2), z(-0.05, 0.15);
+  std::vector<std::array<double, 3>> cs(256);
+  for (auto& c : cs) c = {u(rng), u(rng), z(rng)};
+  std::vector<Interval> box(3);
+  for (auto _ : state)
+    for (const auto& c : cs) {
+      for (std::size_t i = 0; i < 3; ++i) box[i] = Interval(c[i] - 0.01, c[i] + 0.01);
+      benchmark::DoNotOptimize(iv.eval(tape, box)[0]);
+    }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(cs.size()));
+}
+
 std::vector<std::array<double, 2>> rectangle_corners(const ConvolutionImage& image, double pixels) {
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(0, image.width() - 1 - pixels), v(0, image.height() - 1 - pixels);
@@ -122,5 +165,6 @@ BENCHMARK(BM_PolygonImageBuild)->Arg(80)->Arg(320)->Unit(benchmark::kMillisecond
 BENCHMARK(BM_PolygonPoint)->Arg(80)->Arg(320);
 BENCHMARK(BM_SegmentPoint);
 BENCHMARK(BM_PolygonInterval)->Args({80, 10})->Args({80, 100})->Args({80, 1000})->Args({320, 10})->Args({320, 100})->Args({320, 1000});
+BENCHMARK(BM_PolygonFieldInterval)->Args({0, 100})->Args({1, 100})->Args({0, 400})->Args({1, 400})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ImageRange)->Args({320, 4})->Args({320, 32})->Args({320, 256});
 BENCHMARK(BM_ImageBruteHull)->Args({320, 4})->Args({320, 32})->Args({320, 256});

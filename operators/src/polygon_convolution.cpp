@@ -237,6 +237,10 @@ ConvolutionImage::ConvolutionImage(const SkeletalPolygon& polygon, double radius
              plane_origin[1] + corner[0] * x_axis_[1] + corner[1] * y_axis_[1],
              plane_origin[2] + corner[0] * x_axis_[2] + corner[1] * y_axis_[2]};
   // Nodes at integer image coordinates covering the span (the longer side has resolution + 1).
+  bounds_lo_ = lo;
+  bounds_hi_ = hi;
+  // Rounded up generously (1e-9 relative, far above the rounding of the frame's arithmetic).
+  support_distance_ = (std::hypot(extent_, std::sqrt(2.0) * (extent_ + 1.5 / scale_)) + off) * (1 + 1e-9) + 1e-12 * size;
   const int w = static_cast<int>(std::ceil(span[0] * scale_ - 1e-9)) + 1;
   const int h = static_cast<int>(std::ceil(span[1] * scale_ - 1e-9)) + 1;
 
@@ -338,6 +342,14 @@ Fn polygon_convolution(std::span<const SkeletalPolygon> polygons, double radius,
     sum = i == 0 ? d : sum + d;
   }
   return sum;
+}
+
+FieldElement polygon_element(const SkeletalPolygon& polygon, double radius, const PolygonImageOptions& options, double k) {
+  if (!(k >= 0 && std::isfinite(k))) bad("the scale k of an element must be finite and >= 0");
+  const ConvolutionImage image(polygon, radius, options);
+  FieldElement e{image.density(skeleton_query_point(), k), image.bounds_lo(), image.bounds_hi(), 1.0, image.support_distance(),
+                 Falloff::compact};
+  return e;
 }
 
 Fn polygon_convolution_surface(std::span<const SkeletalPolygon> polygons, double radius,

@@ -42,10 +42,13 @@
 // Example:
 //   const SkeletalPolygon square{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
 //   Fn f = polygon_convolution_surface({square}, 0.1, {.resolution = 40});  // a slab, f < 0 inside
+//   Fn many = density_to_implicit(culled_field({polygon_element(square, 0.1), polygon_element(
+//       {{{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}}}, 0.1)}));         // abutting: one plateau
 #pragma once
 
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/interval.hpp"
+#include "genmod/operators/culled_field.hpp"
 #include "genmod/operators/skeletal.hpp"
 
 #include <initializer_list>
@@ -110,6 +113,15 @@ class ConvolutionImage {
   // The kernel's support radius in world units (2.769 r) and in pixels.
   double extent() const noexcept { return extent_; }
   double support_pixels() const noexcept { return scale_ * extent_; }
+  // The density is exactly 0 at every point farther than this from the bounding box of the
+  // polygon's vertices: |q_z| < extent where h > 0, and in the plane the image is 0 beyond
+  // sqrt(2) (extent + 1.5 pixels) of the polygon (the pixel's coverage reaches half a pixel,
+  // the separable filter's square support extent, the bilinear cell one pixel, each along
+  // both axes), plus the vertices' largest distance from their plane.
+  double support_distance() const noexcept { return support_distance_; }
+  // The vertices' bounding box (the skeleton box of polygon_element).
+  const Point3& bounds_lo() const noexcept { return bounds_lo_; }
+  const Point3& bounds_hi() const noexcept { return bounds_hi_; }
 
   // I(q_xy(p)) as an Fn of the query point (dimension 3).
   Fn lookup(const Fn& p = skeleton_query_point()) const;
@@ -120,7 +132,8 @@ class ConvolutionImage {
 
  private:
   Point3 normal_{}, x_axis_{}, y_axis_{}, origin_{};
-  double plane_offset_ = 0, scale_ = 0, radius_ = 0, extent_ = 0;
+  Point3 bounds_lo_{}, bounds_hi_{};
+  double plane_offset_ = 0, scale_ = 0, radius_ = 0, extent_ = 0, support_distance_ = 0;
   std::shared_ptr<const Grid> grid_;
   std::shared_ptr<const CustomOp> op_;  // the lookup operator over grid_
 };
@@ -128,6 +141,12 @@ class ConvolutionImage {
 // The summed density k sum_i h(q_z,i) I_i(q_xy,i) of several polygons of one radius (eq. 6.3).
 Fn polygon_convolution(std::span<const SkeletalPolygon> polygons, double radius, const PolygonImageOptions& options = {},
                        double k = 1.0, const Fn& p = skeleton_query_point());
+// One polygon's density as an element of a culled field (culled_field.hpp): compact support
+// (support_distance() around the vertices' bounding box), so a field of many polygons skips,
+// box by box and point by point, the polygons far away.
+FieldElement polygon_element(const SkeletalPolygon& polygon, double radius, const PolygonImageOptions& options = {},
+                             double k = 1.0);
+
 // f = iso - polygon_convolution(...): genmod's implicit convention, negative inside.
 Fn polygon_convolution_surface(std::span<const SkeletalPolygon> polygons, double radius,
                                const PolygonImageOptions& options = {}, double iso = 0.5, double k = 1.0,
