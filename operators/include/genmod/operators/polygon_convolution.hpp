@@ -8,20 +8,22 @@
 //
 // with q = p in the polygon's frame: q_z the signed distance to its plane, q_xy the image
 // coordinates. I is the polygon rasterized into a real-valued image (the area of each pixel
-// it covers, times the per-vertex weights interpolated with mean value coordinates when given) and
-// filtered with the same B-spline at the same scale, normalized to unit total weight, so the
-// image of a large polygon is 1 in its interior and 1/2 on a long straight edge; far from the
-// edges D -> k h(q_z), and the iso-surface D = 1/2 lies at distance r from a wide polygon.
+// it covers, times the per-vertex weights interpolated with mean value coordinates when
+// given) and filtered with the same B-spline at the same scale, normalized to unit total
+// weight, so the image of a large polygon is 1 in its interior and 1/2 on a long straight
+// edge; far from the edges D -> k h(q_z), and the iso-surface D = 1/2 lies at distance r from
+// a wide polygon. At 80 x 80 pixels the density of a square of side 6 r is within 0.6% of
+// the exact convolution (the separable kernel's closed form; tested).
 // I is the bilinear interpolant of the four nearest samples and 0 outside the image.
 // Polygons superpose by summing their densities.
 //
 // Frame (as App. A.3): the normal by Newell's method; the x axis is `x_axis` projected into
 // the plane if given, else the direction of the first edge (so the edges of rectangles run
 // along pixel rows: less rasterization error than an arbitrary orthogonal vector); the y axis
-// completes the right-handed frame (x, y, normal); the image spans the polygon's 2-D bounds plus a
-// margin of 2 extents on each side, where extent = 2.769 r is the kernel's support radius;
-// `resolution` pixels cover the longer side of that rectangle, and the filter's support is
-// resolution-scale * extent pixels.
+// completes the right-handed frame (x, y, normal); the image spans the polygon's 2-D bounds
+// plus a margin of 2 extents on each side, where extent = 2.769 r is the kernel's support
+// radius; `resolution` pixels cover the longer side of that rectangle, and the filter's
+// support is world_to_image_scale * extent pixels.
 //
 // Density convention: D is a density (positive, larger inside). `polygon_convolution_surface`
 // is the one place it enters genmod's implicit convention, f = iso - D (negative inside);
@@ -36,7 +38,8 @@
 // blocks of 2^a x 2^b samples, so a query reads O(log^2 n) blocks, never every pixel.
 //
 // Bad input (fewer than 3 vertices, non-finite coordinates or weights, a degenerate polygon,
-// one that is not planar within the tolerance, resolution < 2, radius not finite and > 0)
+// one that is not planar within the tolerance, resolution < 2, a radius that is not finite
+// and > 0)
 // throws std::invalid_argument naming the problem.
 //
 // Example:
@@ -48,6 +51,7 @@
 
 #include "genmod/kernel/fn.hpp"
 #include "genmod/kernel/interval.hpp"
+#include "genmod/operators/convolution.hpp"
 #include "genmod/operators/culled_field.hpp"
 #include "genmod/operators/skeletal.hpp"
 
