@@ -4,6 +4,7 @@
 #include "genmod/models/bloomenthal_models.hpp"
 #include "genmod/models/starfish.hpp"
 #include "genmod/operators/convolution.hpp"
+#include "genmod/operators/polygon_convolution.hpp"
 #include "genmod/operators/shapes.hpp"
 
 #include <cmath>
@@ -105,6 +106,27 @@ Fn hand(const ParameterValues& p) {
   return density_to_implicit(culled_convolution(hand_segments(p.at("grip"), p.at("palm_radius"))));
 }
 
+// Bloomenthal's polygonal skeletal elements (§6.1-6.3, polygon_convolution.hpp) in the plane
+// z = 0: a unit square (a slab with rounded rim), an L, or a plus of five abutting unit/3
+// squares (coplanar contiguous polygons: no seam, no bulge at the junction).
+Fn polygon_slab(const ParameterValues& p) {
+  const double shape = p.at("shape"), r = positive(p, "radius"), res = p.at("resolution");
+  if (!(shape == 0 || shape == 1 || shape == 2)) throw std::invalid_argument("parameter 'shape' must be 0 (square), 1 (L) or 2 (plus)");
+  if (r > 0.2) throw std::invalid_argument("parameter 'radius' must be <= 0.2, got " + std::to_string(r));
+  if (!(res >= 2 && res <= 1000 && res == std::floor(res))) throw std::invalid_argument("parameter 'resolution' must be an integer in [2, 1000]");
+  auto rect = [](double x0, double y0, double x1, double y1) {
+    return SkeletalPolygon{{{x0, y0, 0}, {x1, y0, 0}, {x1, y1, 0}, {x0, y1, 0}}, {}};
+  };
+  std::vector<SkeletalPolygon> polys;
+  if (shape == 0) polys = {rect(-0.5, -0.5, 0.5, 0.5)};
+  if (shape == 1) polys = {{{{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0.5, -0.1, 0}, {-0.1, -0.1, 0}, {-0.1, 0.5, 0}, {-0.5, 0.5, 0}}, {}}};
+  if (shape == 2) {
+    const double a = 0.5 / 3;
+    polys = {rect(-a, -a, a, a), rect(a, -a, 3 * a, a), rect(-3 * a, -a, -a, a), rect(-a, a, a, 3 * a), rect(-a, -3 * a, a, -a)};
+  }
+  return polygon_convolution_surface(polys, r, {.resolution = static_cast<int>(res)});
+}
+
 }  // namespace
 
 const std::vector<ImplicitModel>& implicit_gallery() {
@@ -162,6 +184,12 @@ const std::vector<ImplicitModel>& implicit_gallery() {
        {{"grip", 1.0, "scale of every finger's grip angles (0 = straight, 1 = the thesis's table), [0, 2]"},
         {"palm_radius", 0.2, "radius of the metacarpal segments, inches, (0, 0.3]"}},
        hand, {Interval(-3.0, 1.2), Interval(-0.9, 3.8), Interval(-0.9, 0.7)}, 0.02},
+      {"polygon_slab",
+       "Bloomenthal's polygonal skeletal elements (Ch. 6): B-spline convolution images of planar polygons times the distance filter",
+       {{"shape", 0.0, "0 = unit square (a slab), 1 = L, 2 = plus of five abutting squares (seamless junction)"},
+        {"radius", 0.1, "radius r (<= 0.2): the slab's half thickness"},
+        {"resolution", 80.0, "image pixels across the longer side, integer in [2, 1000]"}},
+       polygon_slab, {Interval(-0.8, 0.8), Interval(-0.8, 0.8), Interval(-0.3, 0.3)}, 0.025},
   };
   return models;
 }

@@ -14,7 +14,7 @@ namespace genmod::models {
 namespace {
 
 TEST(ImplicitGallery, EveryModelMeshesValid) {
-  ASSERT_EQ(implicit_gallery().size(), 12u);
+  ASSERT_EQ(implicit_gallery().size(), 13u);
   for (const ImplicitModel& m : implicit_gallery()) {
     SCOPED_TRACE(m.name);
     const ImplicitMesh mesh = mesh_implicit(build_implicit_model(m), m.box, {.min_feature = 2 * m.min_feature});
@@ -28,7 +28,7 @@ TEST(ImplicitGallery, EveryModelMeshesValid) {
       EXPECT_EQ(v.euler_characteristic, 0);
     }
     if (m.name == "starfish" || m.name == "tee" || m.name == "rotated_pair" || m.name == "ramiform" ||
-        m.name == "arc_convolution" || m.name == "arm" || m.name == "hand") {
+        m.name == "arc_convolution" || m.name == "arm" || m.name == "hand" || m.name == "polygon_slab") {
       EXPECT_EQ(v.components, 1u);
       EXPECT_EQ(v.euler_characteristic, 2);
     }
