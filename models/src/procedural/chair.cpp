@@ -9,6 +9,26 @@
 #include "seating.hpp"
 
 namespace genmod::models::detail {
+namespace {
+
+// The arguments, checked (the body and the bounds both read them).
+SeatingShape chair_shape(const Arguments& a) {
+  SeatingShape s;
+  s.length = positive_real(a, "chair", "length");
+  s.depth = positive_real(a, "chair", "depth");
+  s.leg_length = positive_real(a, "chair", "legLength");
+  s.back_length = positive_real(a, "chair", "backLength");
+  s.segments = integer_in(a, "chair", "segments", 1, 64);
+  s.arms = a.boolean("arms");
+  s.bottom_arms = a.boolean("bottomArms");
+  s.shape = a.boolean("shape");
+  // Down to -1: the top row (one height unit) keeps half its height at the dip.
+  s.offset = real_in(a, "chair", "offSet", -1.0, 16.0);
+  s.feet = a.boolean("feet");
+  return s;
+}
+
+}  // namespace
 
 ProceduralModelDef chair_definition() {
   ProcedureSpec spec;
@@ -17,21 +37,11 @@ ProceduralModelDef chair_definition() {
   spec.params = {param("length", 2.0),   param("depth", 2.0),     param("legLength", 2.0),  param("backLength", 1.5),
                  param("segments", 6),   param("arms", false),    param("bottomArms", true), param("shape", false),
                  param("offSet", 2.0), param("feet", false)};
-  spec.out_body = [](const Arguments& a, const CallContext& context) {
-    SeatingShape s;
-    s.length = positive_real(a, "chair", "length");
-    s.depth = positive_real(a, "chair", "depth");
-    s.leg_length = positive_real(a, "chair", "legLength");
-    s.back_length = positive_real(a, "chair", "backLength");
-    s.segments = integer_in(a, "chair", "segments", 1, 64);
-    s.arms = a.boolean("arms");
-    s.bottom_arms = a.boolean("bottomArms");
-    s.shape = a.boolean("shape");
-    // Down to -1: the top row (one height unit) keeps half its height at the dip.
-    s.offset = real_in(a, "chair", "offSet", -1.0, 16.0);
-    s.feet = a.boolean("feet");
-    return build_seating(s, context);
-  };
+  // The lod sets the cushions' (and feet's) sqrt(2) rounds and the legs' steps (seating.cpp).
+  spec.uses_lod = true;
+  // The bounds let a camera cull the chair or choose its lod (camera.hpp).
+  spec.bounds = [](const Arguments& a) { return seating_bounds(chair_shape(a)); };
+  spec.out_body = [](const Arguments& a, const CallContext& context) { return build_seating(chair_shape(a), context); };
   ProceduralModel info{
       "chair",
       "Morkel's chair (Algorithm 5): seat grown by extrusions, back, subdivided cushion, four legs, optional arms "
@@ -40,7 +50,8 @@ ProceduralModelDef chair_definition() {
        {"depth", "seat depth along z"},
        {"legLength", "leg length below the seat"},
        {"backLength", "back height above the seat"},
-       {"segments", "cells per axis (detail; 1-3 give partial chairs: no cushion, no arms)"},
+       {"segments", "cells per axis (detail; 1-3 give partial chairs: no cushion, no arms); the lod sets the cushion's "
+                    "sqrt(2) rounds (2 + lod, at least 1) and, below 0, halves the legs' steps"},
        {"arms", "arm rests extruded from the back"},
        {"bottomArms", "with arms: posts from the seat bridged to the rests"},
        {"shape", "arch the top of the back"},

@@ -15,14 +15,40 @@
 #include <string>
 
 namespace genmod::models::detail {
+namespace {
+// The cushions' (and the feet's legs') sqrt(2) rounds at most: each round doubles a cushion's
+// faces, so lod +4 has 16 times the cushion faces of lod 0.
+constexpr int kMaxSmoothLevels = 6;
+}  // namespace
+
+std::array<Vec3, 2> seating_bounds(const SeatingShape& s) {
+  const int n = s.segments;
+  const double lu = s.length / n, du = s.depth / n, hu = s.back_length / n, thick = std::min(lu, du);
+  // Down to the legs' (or feet's soles') y = -leg_length; up to the back's top raised by the
+  // arch's control point (the apex rises half of it) or the cushions (0.75 du on the seat),
+  // whichever is higher; along z from the back (0) to the seat's front, where a front foot's
+  // toes reach half a depth unit further (0.3 du from its cell's middle to the leg's front,
+  // 0.7 du of foot).
+  const double top = thick + std::max(s.back_length + std::max(s.offset, 0.0) * hu, 0.75 * du);
+  return padded_box(Vec3(0, -s.leg_length, 0), Vec3(s.cushions * s.length, top, s.depth + (s.feet ? 0.5 * du : 0.0)));
+}
 
 PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
   const int n = s.segments;
   const int nx = n * s.cushions;  // seat cells along x
-  const double lu = s.length / n, du = s.depth / n, hu = s.back_length / n, gu = s.leg_length / n;
+  const double lu = s.length / n, du = s.depth / n, hu = s.back_length / n;
   // The thesis starts from a cube of the unit; with length != depth the units differ, and the
   // seat is as thick as the smaller one.
   const double thick = std::min(lu, du);
+  // Level of detail (furniture_tools.hpp): the cushions' and the feet's legs' sqrt(2) rounds
+  // (2 at lod 0) and the legs' extrusion steps follow the context's lod; everything else (the
+  // cells that decide which parts exist) does not, so every lod has the same parts. A cushion
+  // keeps at least one round: unrounded, its box would touch an arm post along an edge (the
+  // post stands on the cell diagonal to the cushion's front corner), which is no longer a
+  // 2-manifold surface; one round pulls its corners in.
+  const int leg_levels = lod_levels(2, context.lod(), kMaxSmoothLevels);
+  const int cushion_levels = std::max(1, leg_levels);
+  const int leg_steps = lod_steps(n, context.lod());
 
   Workpiece w;
   // 1. The seat: one box, its +x face extruded nx - 1 times by a length unit, then the whole
@@ -48,7 +74,7 @@ PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
     const std::string id = "cushion" + std::to_string(k + 1);
     w.extrude_chain(w.name(id, w.select("seat", ratio_box(cell_range(x0, x1, nx), kHigh, cell_range(z0, z1, n)))),
                     Vec3(0, 0.75 * du, 0), 1);
-    sqrt2_subdivide(w.mesh, w.faces(id), 2, 1.0);
+    sqrt2_subdivide(w.mesh, w.faces(id), cushion_levels, 1.0);
     w.sets.update(w.mesh);
   }
 
@@ -65,7 +91,7 @@ PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
       const std::string id = "backcushion" + std::to_string(k + 1);
       w.extrude_chain(w.name(id, w.select("back", ratio_box(cell_range(x0, x1, nx), cell_range(y0, y1, n), kHigh))),
                       Vec3(0, 0, 0.5 * du), 1);
-      sqrt2_subdivide(w.mesh, w.faces(id), 2, 1.0);
+      sqrt2_subdivide(w.mesh, w.faces(id), cushion_levels, 1.0);
       w.sets.update(w.mesh);
     }
 
@@ -85,7 +111,7 @@ PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
     } else {
       const FaceList legs = merged({w.select("seat", corners[0]), w.select("seat", corners[1]),
                                     w.select("seat", corners[2]), w.select("seat", corners[3])});
-      w.extrude_chain(w.name("legs", legs), Vec3(0, -gu, 0), n);
+      w.extrude_chain(w.name("legs", legs), Vec3(0, -s.leg_length / leg_steps, 0), leg_steps);
     }
   }
 
@@ -150,8 +176,10 @@ PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
   //    unit long (numbers the listing takes from its human Leg).
   if (feet) {
     const double gap = 0.25 * std::min(lu, du);
+    // The leg's own default of 2 sqrt(2) rounds at lod 0 (passed explicitly: the same resolved
+    // arguments, so the same cache entry, as leaving it out).
     const NamedArgs leg_args{{"height", s.leg_length - gap}, {"width", 0.6 * lu}, {"depth", 0.6 * du},
-                             {"footLength", 0.7 * du}};
+                             {"footLength", 0.7 * du}, {"subdivisions", leg_levels}};
     for (const FaceList& cell : foot_cells) attach_leg(w, *context.call_shared("leg", leg_args), cell, gap);
   }
   w.mesh.garbage_collection();
