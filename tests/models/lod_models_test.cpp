@@ -202,6 +202,16 @@ TEST(ModelLevelOfDetail, FurnitureLodIsTheSubdivisionParameterMoved) {
                 "");
     }
   }
+  // A far round table is still rounded: its top keeps one sqrt(2) round at any lod (more faces
+  // than the flat grid box it starts from), unless its subdivisions parameter is 0.
+  const auto top_faces = [](const PolyMesh& m) { return faces_labelled(m, "top").size(); };
+  const PolyMesh far = r.call("table", {{"roundTable", true}}, at_lod(-20));
+  EXPECT_EQ(top_faces(far), top_faces(r.call("table", {{"roundTable", true}, {"subdivisions", 1}}, at_lod(-20))));
+  EXPECT_GT(top_faces(far), top_faces(r.call("table", {{"roundTable", true}, {"subdivisions", 0}})));
+  EXPECT_EQ(mesh_difference(r.call("table", {{"roundTable", true}, {"subdivisions", 0}}, at_lod(-20)),
+                            r.call("table", {{"roundTable", true}, {"subdivisions", 0}}, at_lod(-3))),
+            "");
+  genmod::test::expect_valid_closed(far);
 }
 
 TEST(ModelLevelOfDetail, LuggageAndChairFeetLodIsInTheCacheKey) {

@@ -14,13 +14,17 @@
 // subdivided top stays inside the box (claim 24), so the legs cannot be overtaken.
 //
 // Level of detail (camera.hpp, furniture_tools.hpp): the round top gets subdivisions + lod
-// sqrt(2) rounds (0-6), and below lod 0 the legs (prisms) are extruded in half as many steps
-// per level; the box top has nothing curved to refine, so above lod 0 it stays as it is.
+// sqrt(2) rounds (at most 6, and at least 1 unless subdivisions is 0: without a round the top
+// is the flat box, no longer an oval), and below lod 0 the legs (prisms) are extruded in half
+// as many steps per level; the box top has nothing curved to refine, so above lod 0 it stays as
+// it is.
 #include "furniture_tools.hpp"
 #include "procedural_model_defs.hpp"
 
 #include "genmod/procedural/grid_box.hpp"
 #include "genmod/procedural/sqrt2_subdivision.hpp"
+
+#include <algorithm>
 
 namespace genmod::models::detail {
 namespace {
@@ -95,8 +99,9 @@ ProceduralModelDef table_definition() {
   spec.bounds = table_bounds;
   spec.out_body = [](const Arguments& a, const CallContext& context) {
     const TableShape t = table_shape(a);
-    return build_table(t.round, t.length, t.width, t.leg_length, t.thick, t.n, lod_levels(t.levels, context.lod(), 6),
-                       t.smoothing, lod_steps(t.n, context.lod()));
+    const int levels = std::max(std::min(t.levels, 1), lod_levels(t.levels, context.lod(), 6));
+    return build_table(t.round, t.length, t.width, t.leg_length, t.thick, t.n, levels, t.smoothing,
+                       lod_steps(t.n, context.lod()));
   };
   ProceduralModel info{
       "table",
@@ -109,7 +114,7 @@ ProceduralModelDef table_definition() {
        {"thickness", "top thickness"},
        {"segments", "cells per axis of the top (round: >= 3, legs one cell in from the rim)"},
        {"smoothingFactor", "round top: sqrt(2) smoothing factor, 0 (box shape) .. 1"},
-       {"subdivisions", "round top: sqrt(2) levels, 0-6; the lod adds to it (at most 6)"}}};
+       {"subdivisions", "round top: sqrt(2) levels, 0-6; the lod adds to it (at most 6, at least 1 unless 0)"}}};
   return {std::move(spec), std::move(info)};
 }
 
