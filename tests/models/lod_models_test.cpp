@@ -247,6 +247,7 @@ TEST(ModelLevelOfDetail, FurnitureBoundsHoldTheMeshes) {
       {"chair", {{"arms", true}, {"shape", true}, {"offSet", 16.0}}},
       {"chair", {{"feet", true}, {"segments", 3}, {"length", 0.5}}},
       {"chair", {{"backLength", 0.1}, {"depth", 4.0}, {"segments", 10}}},
+      {"chair", {{"cubic", false}, {"feet", true}, {"arms", true}}},
       {"couch", {}},
       {"couch", {{"numCushions", 1}, {"shape", true}, {"offSet", -1.0}}},
       {"table", {}},

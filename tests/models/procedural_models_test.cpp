@@ -146,6 +146,40 @@ TEST(ProceduralModels, ChairAtEveryDetailLevel) {
   }
 }
 
+// Experiment 3's chair from a disc (cubic = false): at every detail level and with arms, feet
+// and a shaped back it meshes valid and closed, with the square chair's counts (the same
+// construction drawn onto a round seat); without feet every vertex lies in the ellipse
+// inscribed in the seat rectangle and the rectangle's corners are on it.
+TEST(ProceduralModels, ChairOnADiscBase) {
+  std::vector<NamedArgs> variants;
+  for (int segments = 1; segments <= 10; ++segments) variants.push_back({{"segments", segments}});
+  variants.push_back({{"arms", true}, {"shape", true}});
+  variants.push_back({{"arms", true}, {"bottomArms", false}, {"segments", 9}, {"length", 3.0}});
+  variants.push_back({{"feet", true}, {"arms", true}});
+  for (NamedArgs args : variants) {
+    const bool feet = std::any_of(args.begin(), args.end(), [](const auto& a) { return a.first == "feet"; });
+    const PolyMesh square = build("chair", args);
+    args.emplace_back("cubic", false);
+    SCOPED_TRACE("variant with " + std::to_string(args.size()) + " arguments, first " + args[0].first);
+    const PolyMesh disc = build("chair", args);
+    expect_valid_closed(disc);
+    EXPECT_EQ(disc.n_vertices(), square.n_vertices());
+    EXPECT_EQ(disc.n_faces(), square.n_faces());
+    double length = 2.0;
+    for (const auto& [k, v] : args)
+      if (k == "length") length = v.as_double();
+    const double cx = 0.5 * length, cz = 1.0;  // depth 2
+    double largest = 0;
+    for (auto v : disc.vertices()) {
+      const Vec3 p = disc.point(v);
+      largest = std::max(largest, std::hypot((p[0] - cx) / cx, (p[2] - cz) / cz));
+    }
+    if (!feet) EXPECT_NEAR(largest, 1.0, 1e-12);  // on the ellipse, never beyond it
+  }
+  // The listing's default, cubic = true, is the square chair.
+  EXPECT_EQ(mesh_difference(build("chair", {{"cubic", true}}), build("chair")), "");
+}
+
 // Claim 30: the luggage's face count grows by a constant amount per leg (same leg, same
 // layout rule; the base grid grows with the rows).
 TEST(ProceduralModels, LuggageWithExperimentLegCounts) {

@@ -1,9 +1,11 @@
 // chair: Algorithm 5 / App. C.4 of the thesis (research/morkel.md section 3.2) as a registered
 // Out procedure. Parameters and defaults are the listing's, less the ones it declares but does
-// not use or that genmod has no counterpart for: numLegs and type (unused), cubic (the disc
-// base: no Disc primitive here), file and fileName (`genmod mesh` writes files). feet calls
-// the human `leg` procedure (leg.cpp, with its foot), as the listing calls the human Leg. segments is an Integer here (the thesis's 6.0 is used as a count). bottomArms is
-// Algorithm 5's flag (the listing joins the posts whenever arms is set).
+// not use or that genmod has no counterpart for: numLegs and type (unused), file and fileName
+// (`genmod mesh` writes files). cubic = false is the disc base of Experiment 3 (the chair drawn
+// onto a round seat, seating.cpp). feet calls the human `leg` procedure (leg.cpp, with its
+// foot), as the listing calls the human Leg. segments is an Integer here (the thesis's 6.0 is
+// used as a count). bottomArms is Algorithm 5's flag (the listing joins the posts whenever arms
+// is set).
 #include "furniture_tools.hpp"
 #include "procedural_model_defs.hpp"
 #include "seating.hpp"
@@ -25,6 +27,7 @@ SeatingShape chair_shape(const Arguments& a) {
   // Down to -1: the top row (one height unit) keeps half its height at the dip.
   s.offset = real_in(a, "chair", "offSet", -1.0, 16.0);
   s.feet = a.boolean("feet");
+  s.disc = !a.boolean("cubic");
   return s;
 }
 
@@ -36,7 +39,7 @@ ProceduralModelDef chair_definition() {
   spec.mode = Mode::Out;
   spec.params = {param("length", 2.0),   param("depth", 2.0),     param("legLength", 2.0),  param("backLength", 1.5),
                  param("segments", 6),   param("arms", false),    param("bottomArms", true), param("shape", false),
-                 param("offSet", 2.0), param("feet", false)};
+                 param("offSet", 2.0), param("feet", false),  param("cubic", true)};
   // The lod sets the cushions' (and feet's) sqrt(2) rounds and the legs' steps (seating.cpp).
   spec.uses_lod = true;
   // The bounds let a camera cull the chair or choose its lod (camera.hpp).
@@ -56,7 +59,8 @@ ProceduralModelDef chair_definition() {
        {"bottomArms", "with arms: posts from the seat bridged to the rests"},
        {"shape", "arch the top of the back"},
        {"offSet", "arch control height in back cells (apex rises half of it); -1..16"},
-       {"feet", "legs are calls of the cacheable `leg` (with feet) instead of extrusions; segments >= 3"}}};
+       {"feet", "legs are calls of the cacheable `leg` (with feet) instead of extrusions; segments >= 3"},
+       {"cubic", "the square base (true) or the disc base of the base-shape experiment (false): the seat round"}}};
   return {std::move(spec), std::move(info)};
 }
 

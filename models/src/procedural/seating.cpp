@@ -12,10 +12,35 @@
 #include "genmod/procedural/stitching.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace genmod::models::detail {
 namespace {
+
+// The disc base (the chair's cubic = false, Experiment 3's "chair from a disc"): the finished
+// seating is drawn onto a round seat by a radial map in x and z about the seat's middle, in
+// coordinates where the seat rectangle is [-1, 1]^2: p -> p max(|u|, |v|) / |p|. It takes the
+// rectangle's outline to the inscribed ellipse and every ray from the middle to itself, scaled
+// by a factor in [1/sqrt 2, 1] that depends only on the ray's direction, so it is one-to-one
+// everywhere and moves no point away from the middle (the bounds still hold). y is untouched,
+// so walls stay vertical and horizontal faces horizontal: every face stays planar, and the
+// construction's cells, parts and counts are those of the square chair.
+// The thesis makes its Disc by smoothing subdivision of a box instead; a subdivided grid would
+// no longer have the cells the selections here are made of.
+void round_the_base(PolyMesh& mesh, double length, double depth) {
+  const double cx = 0.5 * length, cz = 0.5 * depth;
+  for (auto v : mesh.vertices()) {
+    Vec3 p = mesh.point(v);
+    const double u = (p[0] - cx) / cx, w = (p[2] - cz) / cz, r = std::hypot(u, w);
+    if (r == 0) continue;  // the middle stays
+    const double scale = std::max(std::abs(u), std::abs(w)) / r;
+    p[0] = cx + cx * u * scale;
+    p[2] = cz + cz * w * scale;
+    mesh.set_point(v, p);
+  }
+}
+
 // The cushions' (and the feet's legs') sqrt(2) rounds at most: each round doubles a cushion's
 // faces, so lod +4 has 16 times the cushion faces of lod 0.
 constexpr int kMaxSmoothLevels = 6;
@@ -183,6 +208,7 @@ PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
     for (const FaceList& cell : foot_cells) attach_leg(w, *context.call_shared("leg", leg_args), cell, gap);
   }
   w.mesh.garbage_collection();
+  if (s.disc) round_the_base(w.mesh, s.cushions * s.length, s.depth);
   return std::move(w.mesh);
 }
 

@@ -18,6 +18,7 @@ struct SeatingShape {
   int cushions = 1;          // seat cushions side by side along x
   bool arms = false, bottom_arms = true, shape = false, back_cushions = false;
   bool feet = false;  // `leg` procedure calls instead of extruded legs (needs segments >= 3)
+  bool disc = false;  // the chair's round base (the listing's cubic = false): see seating.cpp
   double offset = 2.0;  // the shaped back top rises offset * backLength / segments / 2 in the middle
 };
 
