@@ -67,15 +67,11 @@ Camera parse_camera(const std::string& text) {
   if (v.size() != 6)
     throw UsageError("--camera expects EX,EY,EZ,TX,TY,TZ (the eye and the point it looks at, 6 numbers), got '" +
                      text + "'");
-  Camera c;
-  c.position = Vec3(v[0], v[1], v[2]);
-  c.direction = Vec3(v[3], v[4], v[5]) - c.position;
-  c.up = Vec3(0, 0, 1);
-  if (c.direction.sqrnorm() == 0) throw UsageError("--camera: the eye and the target are the same point ('" + text + "')");
-  if (c.direction[0] == 0 && c.direction[1] == 0)
-    throw UsageError("--camera: the view is vertical ('" + text + "'); the camera's up is +z, so look at a target "
-                     "that is not straight above or below the eye");
-  return c;
+  try {
+    return models::camera_looking_at(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--" + std::string(e.what()) + " ('" + text + "')");  // "--camera: ..."
+  }
 }
 
 }  // namespace

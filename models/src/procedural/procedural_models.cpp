@@ -5,6 +5,7 @@
 
 #include "genmod/procedural/affine.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace genmod::models {
@@ -89,6 +90,21 @@ Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args, std::
   context.seed = seed;
   context.lod = lod;
   return meshed_z_up(name, args, context);
+}
+
+Camera camera_looking_at(const Vec3& eye, const Vec3& target) {
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(eye[k]) || !std::isfinite(target[k]))
+      throw std::invalid_argument("camera: the eye and the target must be finite points");
+  Camera c;
+  c.position = eye;
+  c.direction = target - eye;
+  c.up = Vec3(0, 0, 1);
+  if (c.direction.sqrnorm() == 0) throw std::invalid_argument("camera: the eye and the target are the same point");
+  if (c.direction[0] == 0 && c.direction[1] == 0)
+    throw std::invalid_argument("camera: the view is vertical; the camera's up is +z, so look at a target that is "
+                                "not straight above or below the eye");
+  return c;
 }
 
 Camera procedure_frame_camera(const Camera& z_up) {

@@ -106,6 +106,12 @@ ProcedureRegistry& procedural_registry();
 // use it (tree, human, chair, couch, table, luggage), ignored by the others.
 Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args = {}, std::int64_t seed = 0, int lod = 0);
 
+// A camera at `eye` looking at `target`, +z up, in genmod's z-up frame, with camera.hpp's
+// defaults for the rest (640 x 480 pixels, lod -8..0): what `genmod mesh --camera` and Python's
+// procedural.mesh(camera=...) build. Throws std::invalid_argument for a non-finite point, an eye
+// at the target ("same point") or a vertical view ("vertical": the up would be the view).
+Camera camera_looking_at(const Vec3& eye, const Vec3& target);
+
 // A camera given in genmod's z-up frame (the frame of mesh_procedural_model's meshes and of
 // `genmod mesh --camera`) turned into the procedures' y-up frame, where the registry places
 // bounds: position, direction and up go through (x, y, z) -> (x, z, -y), the inverse of the
