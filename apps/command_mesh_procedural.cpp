@@ -1,5 +1,7 @@
-// genmod mesh NAME [--param K=V ...] [--seed S] [--lod L] -o FILE: a procedural model (Morkel's registered
-// procedures, procedural_models.hpp) as the triangulation of the polygon mesh it builds.
+// genmod mesh NAME [--param K=V ...] [--seed S] [--lod L | --camera EYE,TARGET] -o FILE: a procedural model
+// (Morkel's registered procedures, procedural_models.hpp) as the triangulation of the polygon mesh it builds.
+// A camera chooses the level of detail from the size of the model's bounding box on screen (camera.hpp),
+// and a model it does not see is an error rather than an empty file.
 #include "arguments.hpp"
 #include "commands.hpp"
 #include "file_arguments.hpp"
@@ -11,7 +13,10 @@
 
 #include <array>
 #include <cerrno>
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <optional>
 #include <cstdio>
 #include <cstdlib>
 #include <set>
@@ -49,6 +54,26 @@ ParamValue parse_value(const ProcedureSpec& spec, const std::string& name, const
   }
 }
 
+// "ex,ey,ez,tx,ty,tz": a camera at the eye looking at the target, +z up (the frame of the
+// written mesh), with camera.hpp's defaults for the rest (640 x 480 pixels, lod -8..0).
+Camera parse_camera(const std::string& text) {
+  std::vector<double> v;
+  std::size_t begin = 0;
+  while (begin <= text.size()) {
+    const std::size_t end = std::min(text.find(',', begin), text.size());
+    v.push_back(parse_number("--camera", text.substr(begin, end - begin)));
+    begin = end + 1;
+  }
+  if (v.size() != 6)
+    throw UsageError("--camera expects EX,EY,EZ,TX,TY,TZ (the eye and the point it looks at, 6 numbers), got '" +
+                     text + "'");
+  try {
+    return models::camera_looking_at(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("--" + std::string(e.what()) + " ('" + text + "')");  // "--camera: ..."
+  }
+}
+
 }  // namespace
 
 int run_mesh_procedural(std::span<const std::string> args) {
@@ -70,7 +95,7 @@ int run_mesh_procedural(std::span<const std::string> args) {
     }
   }
   static constexpr std::array<const char*, 1> kFlags{"--no-check"};
-  static constexpr std::array<const char*, 4> kValued{"-o", "--output", "--seed", "--lod"};
+  static constexpr std::array<const char*, 5> kValued{"-o", "--output", "--seed", "--lod", "--camera"};
   const Arguments a(rest, kFlags, kValued);
   if (a.positional().size() != 1)
     throw UsageError("expected one model name, got " + std::to_string(a.positional().size()));
@@ -93,6 +118,11 @@ int run_mesh_procedural(std::span<const std::string> args) {
       throw UsageError("--lod: '" + *text + "' is not an integer in -64..64");
     lod = static_cast<int>(v);
   }
+  std::optional<Camera> camera;
+  if (const auto text = a.value({"--camera"})) {
+    if (a.value({"--lod"})) throw UsageError("--lod and --camera exclude each other: the camera chooses the lod");
+    camera = parse_camera(*text);
+  }
   check_writable(output);
 
   const ProcedureSpec& spec = models::procedural_registry().spec(name);
@@ -100,14 +130,26 @@ int run_mesh_procedural(std::span<const std::string> args) {
   for (const auto& [k, v] : params) named.emplace_back(k, parse_value(spec, k, v));
   const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
+  std::string lod_note = lod != 0 ? ", lod " + std::to_string(lod) : "";
   try {
-    mesh = models::mesh_procedural_model(name, named, seed, lod);
+    if (camera) {
+      const std::optional<BoxView> view = models::procedural_model_view(name, named, *camera);
+      if (!view)
+        throw UsageError("--camera: '" + name + "' declares no bounding box, so a camera cannot place it (use --lod)");
+      if (!view->visible)
+        throw UsageError("--camera: '" + name + "' is out of the camera's view (its bounding box is outside the "
+                         "frustum): nothing to mesh");
+      lod_note = ", camera lod " + std::to_string(view->lod) + " (" + std::to_string(std::lround(view->pixels)) +
+                 " pixels)";
+      mesh = models::mesh_procedural_model(name, named, seed, *camera);
+    } else {
+      mesh = models::mesh_procedural_model(name, named, seed, lod);
+    }
   } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());  // unknown parameter, wrong type, value out of range
+    throw UsageError(e.what());  // unknown parameter, wrong type, value out of range, bad camera
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_mesh(mesh, output);
-  const std::string lod_note = lod != 0 ? ", lod " + std::to_string(lod) : "";
   std::printf("%s (procedural, seed %lld%s): %zu vertices, %zu triangles in %.3f s -> %s\n", name.c_str(),
               static_cast<long long>(seed), lod_note.c_str(), mesh.vertices.size(), mesh.triangles.size(), seconds,
               output.c_str());

@@ -9,7 +9,9 @@
 
 #include <pybind11/stl.h>
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace py = pybind11;
@@ -74,6 +76,39 @@ void bind_procedural(py::module_& m) {
     py::gil_scoped_release unlocked;
     return models::mesh_procedural_model(name, named, seed, lod);
   }, py::arg("name"), py::arg("args"), py::arg("seed"), py::arg("lod") = 0);
+  // With a camera (eye and target, z up): the mesh at the lod the camera chooses for the model's
+  // bounds (empty when out of view), and that view (None for a model without bounds).
+  m.def("_mesh_procedural_camera", [](const std::string& name, const py::dict& args, std::int64_t seed,
+                                      std::array<double, 3> eye, std::array<double, 3> target) {
+    if (models::find_procedural_model(name) == nullptr)
+      throw std::invalid_argument("genmod.procedural: no procedural model named '" + name + "'");
+    NamedArgs named;
+    for (const auto& [key, value] : args) {
+      const std::string k = py::str(key);
+      named.emplace_back(k, param_from_python(name, k, value));
+    }
+    const Camera camera = models::camera_looking_at(Vec3(eye[0], eye[1], eye[2]), Vec3(target[0], target[1], target[2]));
+    py::gil_scoped_release unlocked;
+    return models::mesh_procedural_model(name, named, seed, camera);
+  }, py::arg("name"), py::arg("args"), py::arg("seed"), py::arg("eye"), py::arg("target"));
+  m.def("_procedural_view", [](const std::string& name, const py::dict& args, std::array<double, 3> eye,
+                               std::array<double, 3> target) -> py::object {
+    if (models::find_procedural_model(name) == nullptr)
+      throw std::invalid_argument("genmod.procedural: no procedural model named '" + name + "'");
+    NamedArgs named;
+    for (const auto& [key, value] : args) {
+      const std::string k = py::str(key);
+      named.emplace_back(k, param_from_python(name, k, value));
+    }
+    const Camera camera = models::camera_looking_at(Vec3(eye[0], eye[1], eye[2]), Vec3(target[0], target[1], target[2]));
+    const std::optional<BoxView> view = models::procedural_model_view(name, named, camera);
+    if (!view) return py::none();
+    py::dict d;
+    d["visible"] = view->visible;
+    d["lod"] = view->lod;
+    d["pixels"] = view->pixels;
+    return d;
+  }, py::arg("name"), py::arg("args"), py::arg("eye"), py::arg("target"));
   m.def("_procedural_cache", [](const std::string& name) {
     const CacheStats s = models::procedural_registry().cache_stats(name);
     py::dict d;

@@ -193,6 +193,32 @@ TEST(HumanAndTree, EggTorsoHumanHasTwoArmsTwoLegsAndAHead) {
   }
 }
 
+// Experiment 3's egg: the egg torso lies in the ellipsoid inscribed in the cubical torso's
+// block, its unsubdivided attachment faces on it, and its smoothed rest close to it (the
+// default torso: 0.611 x 0.398 x 0.288 m about (0, height / 2, 0)).
+TEST(HumanAndTree, EggTorsoIsAnEllipsoid) {
+  const PolyMesh egg = build("torso", {{"cubical", false}});
+  expect_valid_closed(egg);
+  const double a = 0.39756521739130435 / 2, b = 0.6112565217391304 / 2, c = 0.28823478260869567 / 2;
+  double lowest = HUGE_VAL, highest = 0;
+  for (auto v : egg.vertices()) {
+    const Vec3 p = egg.point(v);
+    const double r = std::sqrt(std::pow(p[0] / a, 2) + std::pow((p[1] - b) / b, 2) + std::pow(p[2] / c, 2));
+    lowest = std::min(lowest, r);
+    highest = std::max(highest, r);
+  }
+  EXPECT_LE(highest, 1.0 + 1e-12);  // smoothing only moves points inwards (claim 24)
+  EXPECT_GE(highest, 1.0 - 1e-12);  // the limbs' faces are not smoothed
+  EXPECT_GT(lowest, 0.9);
+  for (const char* joint : {"neck", "shoulder_l", "shoulder_r", "hip_l", "hip_r"}) {
+    for (auto f : faces_labelled(egg, joint))
+      for (auto v : egg.fv_range(f)) {
+        const Vec3 p = egg.point(v);
+        EXPECT_NEAR(std::pow(p[0] / a, 2) + std::pow((p[1] - b) / b, 2) + std::pow(p[2] / c, 2), 1.0, 1e-12) << joint;
+      }
+  }
+}
+
 TEST(HumanAndTree, FeetAreMirroredWithTheBigToeInside) {
   const PolyMesh left = build("foot"), right = build("foot", {{"side", "right"}});
   const auto tip_x = [](const PolyMesh& m) {

@@ -121,12 +121,19 @@ TEST(LuggageCache, LuggageKeyHoldsEveryArgumentAndTheSeed) {  // claims 11-12
   r.call("luggage", base, at(6));
   EXPECT_EQ(misses(), 1u + changed.size() + 1u);
   EXPECT_EQ(r.cache_stats("leg").misses, leg_misses + 1);
-  // Called again: a hit and no sub-call at all; another lod is the same luggage.
+  // Called again: a hit and no sub-call at all.
   const std::uint64_t leg_calls = r.cache_stats("leg").misses + r.cache_stats("leg").hits;
   EXPECT_EQ(mesh_difference(r.call("luggage", base, at(5)), first), "");
-  EXPECT_EQ(mesh_difference(r.call("luggage", base, at(5, 2)), first), "");
-  EXPECT_EQ(r.cache_stats("luggage").hits, 2u);
+  EXPECT_EQ(r.cache_stats("luggage").hits, 1u);
   EXPECT_EQ(r.cache_stats("leg").misses + r.cache_stats("leg").hits, leg_calls);
+  // Another lod is another luggage (legs with legSubdivisions + lod rounds): a miss, and a luggage
+  // equal to the one whose legSubdivisions is moved by that lod (the lod 0 call of it is a
+  // third key).
+  const PolyMesh finer = r.call("luggage", base, at(5, 2));
+  EXPECT_EQ(misses(), 1u + changed.size() + 2u);
+  EXPECT_EQ(mesh_difference(finer, r.call("luggage", {{"numLegs", 2}, {"legSubdivisions", 3}}, at(5))), "");
+  EXPECT_EQ(misses(), 1u + changed.size() + 3u);
+  EXPECT_GT(finer.n_faces(), first.n_faces());
 }
 
 TEST(LuggageCache, ChestArgumentsAreCheckedByName) {

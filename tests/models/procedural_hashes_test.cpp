@@ -1,7 +1,8 @@
 // Golden content hashes of the procedural models (issue 12): the mesh tools and the cache were
 // reworked for speed (in-place edits, shared cache hits, cached chest and luggage) and must not
 // change a single byte of any model. The hashes were recorded with the code before that work
-// (commit 80e05f7); every case is checked with caching off, cold and warm.
+// (commit 80e05f7), except the egg human's (see its line); every case is checked with caching
+// off, cold and warm.
 #include "genmod/models/procedural_models.hpp"
 #include "genmod/procedural/mesh_hash.hpp"
 
@@ -40,7 +41,9 @@ const std::vector<HashCase>& cases() {
       {"chair", {{"feet", true}, {"arms", true}, {"shape", true}}, 0, "7eaaf9a0ed146e7f85d0f6f02a69b004"},
       {"couch", {{"numCushions", 2}, {"shape", true}}, 0, "d6a715cc9504b2e853f82e46df192e86"},
       {"table", {{"roundTable", true}}, 0, "f54e5187869bbf5e153938ae3975fc2f"},
-      {"human", {{"cubical", false}}, 5, "0e0a21fcdb3d55a7a68a6c1f7db54042"},
+      // Re-recorded when the egg torso became an ellipsoid (a rounded box before) and its legs
+      // 0.6 head wide (0.7 would overlap under it).
+      {"human", {{"cubical", false}}, 5, "fd0ca1803419276d1736220c01ac687f"},
       {"tree", {{"levels", 5}}, 11, "b371df4c061c184c1c6d8f11b4558a24"},
   };
   return all;

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -109,7 +110,28 @@ TEST(ProceduralModels, VariantsMeshValid) {
   }
 }
 
-// Claim 30: the chair completes at every segments 1..10 (valid), with all its parts from 5 on.
+// The pieces of the faces labelled `label`: groups of faces joined through shared edges.
+std::size_t labelled_pieces(const PolyMesh& mesh, const std::string& label) {
+  const FaceList faces = faces_labelled(mesh, label);
+  std::set<int> left;
+  for (auto f : faces) left.insert(f.idx());
+  std::size_t pieces = 0;
+  while (!left.empty()) {
+    ++pieces;
+    std::vector<int> stack{*left.begin()};
+    left.erase(left.begin());
+    while (!stack.empty()) {
+      const PolyMesh::FaceHandle f(stack.back());
+      stack.pop_back();
+      for (auto g : mesh.ff_range(f))
+        if (left.erase(g.idx())) stack.push_back(g.idx());
+    }
+  }
+  return pieces;
+}
+
+// Claim 30: the chair completes at every segments value; from 5 on it has every part (the
+// thesis's complete chairs).
 TEST(ProceduralModels, ChairAtEveryDetailLevel) {
   for (int segments = 1; segments <= 10; ++segments) {
     SCOPED_TRACE("segments " + std::to_string(segments));
@@ -118,8 +140,44 @@ TEST(ProceduralModels, ChairAtEveryDetailLevel) {
     if (segments >= 5) {
       for (const char* part : {"back", "cushion1", "legs", "armrest_l", "armrest_r", "seat"})
         EXPECT_FALSE(faces_labelled(chair, part).empty()) << part;
+      // Four legs: the "legs" faces fall into four pieces joined by edges (one per corner).
+      EXPECT_EQ(labelled_pieces(chair, "legs"), 4u);
     }
   }
+}
+
+// Experiment 3's chair from a disc (cubic = false): at every detail level and with arms, feet
+// and a shaped back it meshes valid and closed, with the square chair's counts (the same
+// construction drawn onto a round seat); without feet every vertex lies in the ellipse
+// inscribed in the seat rectangle and the rectangle's corners are on it.
+TEST(ProceduralModels, ChairOnADiscBase) {
+  std::vector<NamedArgs> variants;
+  for (int segments = 1; segments <= 10; ++segments) variants.push_back({{"segments", segments}});
+  variants.push_back({{"arms", true}, {"shape", true}});
+  variants.push_back({{"arms", true}, {"bottomArms", false}, {"segments", 9}, {"length", 3.0}});
+  variants.push_back({{"feet", true}, {"arms", true}});
+  for (NamedArgs args : variants) {
+    const bool feet = std::any_of(args.begin(), args.end(), [](const auto& a) { return a.first == "feet"; });
+    const PolyMesh square = build("chair", args);
+    args.emplace_back("cubic", false);
+    SCOPED_TRACE("variant with " + std::to_string(args.size()) + " arguments, first " + args[0].first);
+    const PolyMesh disc = build("chair", args);
+    expect_valid_closed(disc);
+    EXPECT_EQ(disc.n_vertices(), square.n_vertices());
+    EXPECT_EQ(disc.n_faces(), square.n_faces());
+    double length = 2.0;
+    for (const auto& [k, v] : args)
+      if (k == "length") length = v.as_double();
+    const double cx = 0.5 * length, cz = 1.0;  // depth 2
+    double largest = 0;
+    for (auto v : disc.vertices()) {
+      const Vec3 p = disc.point(v);
+      largest = std::max(largest, std::hypot((p[0] - cx) / cx, (p[2] - cz) / cz));
+    }
+    if (!feet) EXPECT_NEAR(largest, 1.0, 1e-12);  // on the ellipse, never beyond it
+  }
+  // The listing's default, cubic = true, is the square chair.
+  EXPECT_EQ(mesh_difference(build("chair", {{"cubic", true}}), build("chair")), "");
 }
 
 // Claim 30: the luggage's face count grows by a constant amount per leg (same leg, same

@@ -136,6 +136,33 @@ TEST(CurveShaping, LodIndependenceClaim27) {
   EXPECT_LT(previous, 2e-3);
 }
 
+// The tools' contract (issue 12) for curve shaping: it moves vertices only, so a closed
+// 2-manifold keeps its element counts and stays closed and manifold; a curve the moves keep
+// clear of the rest of the solid leaves it valid (no self-intersection), and the same input
+// gives the same bytes.
+TEST(CurveShaping, ClosedMeshStaysClosedValidAndDeterministic) {
+  const PolyMesh box = make_grid_box(Vec3(0, 0, 0), Vec3(2, 1, 1), 6);
+  const FaceList top = faces_with_centroid_in(box, Vec3(-1, -1, 1), Vec3(3, 2, 1));
+  ASSERT_EQ(top.size(), 36u);
+  // An arch across x over the top (apex 0.5 above it) and a dip into it (apex 0.1 below, less
+  // than a cell's 1/6: a deeper dip would pull the side walls' top vertices below their next
+  // row and fold the walls, a self-intersection of the shape asked for, not of the tool), each
+  // moving the top's vertices along z, seen along y.
+  for (double rise : {1.0, -0.2}) {
+    SCOPED_TRACE("control point " + std::to_string(rise) + " above the top");
+    const BezierCurve arch({Vec3(0, 0, 1), Vec3(1, 0, 1 + rise), Vec3(2, 0, 1)});
+    PolyMesh a = box, b = box;
+    EXPECT_EQ(shape_to_curve(a, top, arch, Vec3(0, 0, 1), Vec3(0, 1, 0)), 49u);  // every top vertex
+    shape_to_curve(b, top, arch, Vec3(0, 0, 1), Vec3(0, 1, 0));
+    EXPECT_EQ(mesh_difference(a, b), "");
+    EXPECT_EQ(a.n_vertices(), box.n_vertices());
+    EXPECT_EQ(a.n_edges(), box.n_edges());
+    EXPECT_EQ(a.n_faces(), box.n_faces());
+    EXPECT_NE(mesh_difference(a, box), "");
+    test::expect_valid_closed(a);
+  }
+}
+
 TEST(CurveShaping, EmptySelectionIsANoOpClaim18) {
   PolyMesh mesh = make_grid_box(Vec3(0, 0, 0), Vec3(1, 1, 1), 2);
   const PolyMesh before = mesh;

@@ -39,6 +39,32 @@ def test_a_lower_level_of_detail_is_coarser_and_still_valid():
     assert len(coarse.triangles) < len(fine.triangles) and coarse.validate()["valid"]
 
 
+def test_a_camera_chooses_the_level_of_detail():
+    # In front of the chair (its front faces -y, z up): near, the lod 0 chair; far, a coarser one
+    # at the lod view() reports; turned away, nothing.
+    near = procedural.view("chair", ((1, -6, 1), (1, -1, 0.5)))
+    assert near["visible"] and near["lod"] == 0
+    seen = procedural.mesh("chair", camera=((1, -6, 1), (1, -1, 0.5)))
+    assert seen.triangles.tobytes() == procedural.mesh("chair").triangles.tobytes()
+    far = procedural.view("luggage", ((0.5, -200, 1), (0.5, -1, 1)))
+    assert far["visible"] and far["lod"] < 0
+    coarse = procedural.mesh("luggage", camera=((0.5, -200, 1), (0.5, -1, 1)))
+    assert coarse.triangles.tobytes() == procedural.mesh("luggage", lod=far["lod"]).triangles.tobytes()
+    assert len(coarse.triangles) < len(procedural.mesh("luggage").triangles) and coarse.validate()["valid"]
+    away = ((1, -6, 1), (1, -12, 1))
+    assert not procedural.view("chair", away)["visible"]
+    assert len(procedural.mesh("chair", camera=away).triangles) == 0
+    assert procedural.view("leg", away) is None
+    with pytest.raises(ValueError, match="same point"):
+        procedural.mesh("chair", camera=((1, 2, 3), (1, 2, 3)))
+    with pytest.raises(ValueError, match="vertical"):
+        procedural.view("chair", ((1, 2, 3), (1, 2, 0)))
+    with pytest.raises(ValueError, match="pair"):
+        procedural.mesh("chair", camera=(1, 2, 3))
+    with pytest.raises(ValueError, match="not both"):
+        procedural.mesh("chair", lod=-1, camera=away)
+
+
 def test_the_luggage_builds_its_leg_once():
     procedural.set_caching(True)
     procedural.clear_caches()

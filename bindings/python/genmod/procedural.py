@@ -60,12 +60,39 @@ def models():
             for name, doc, sig, params, cacheable in _genmod._procedural_models()]
 
 
-def mesh(name, seed=0, lod=0, **params):
+def mesh(name, seed=0, lod=0, camera=None, **params):
     """The model's triangle mesh (z up) with the given parameters (the others keep their
     defaults). lod is the level of detail, a refinement offset: 0 as the parameters say, below 0
-    coarser for the models that use it (the tree drops branch orders, the human subdivision
-    levels). ValueError names the procedure and the parameter of a bad value."""
-    return _genmod._mesh_procedural(name, params, int(seed), int(lod))
+    coarser for the models that use it (the tree drops branch orders, the human, chair, couch,
+    round table and luggage sqrt(2) rounds). camera, a pair (eye, target) of points in the
+    mesh's z-up frame, chooses the lod instead from the model's bounding box on screen (see
+    view); a model out of its view gives an empty mesh. ValueError names the procedure and the
+    parameter of a bad value, or the camera's problem."""
+    if camera is None:
+        return _genmod._mesh_procedural(name, params, int(seed), int(lod))
+    if lod != 0:
+        raise ValueError("procedural.mesh: give lod or camera, not both (the camera chooses the lod)")
+    eye, target = _camera_points(camera)
+    return _genmod._mesh_procedural_camera(name, params, int(seed), eye, target)
+
+
+def view(name, camera, **params):
+    """How a camera (eye, target), +z up and 640 x 480 pixels, sees the model's bounding box:
+    {'visible': bool, 'lod': int, 'pixels': float}, the lod mesh(camera=...) builds at; None for
+    a model that declares no bounds (the camera neither culls it nor sets its lod)."""
+    eye, target = _camera_points(camera)
+    return _genmod._procedural_view(name, params, eye, target)
+
+
+def _camera_points(camera):
+    try:
+        eye, target = camera
+        eye, target = tuple(float(x) for x in eye), tuple(float(x) for x in target)
+    except (TypeError, ValueError):
+        raise ValueError(f"camera must be a pair (eye, target) of 3-D points, got {camera!r}") from None
+    if len(eye) != 3 or len(target) != 3:
+        raise ValueError(f"camera must be a pair (eye, target) of 3-D points, got {camera!r}")
+    return eye, target
 
 
 def cache_stats(name):

@@ -7,6 +7,26 @@
 #include "seating.hpp"
 
 namespace genmod::models::detail {
+namespace {
+
+// The arguments, checked (the body and the bounds both read them).
+SeatingShape couch_shape(const Arguments& a) {
+  SeatingShape s;
+  s.length = positive_real(a, "couch", "length");
+  s.depth = positive_real(a, "couch", "depth");
+  s.leg_length = positive_real(a, "couch", "legLength");
+  s.back_length = positive_real(a, "couch", "backLength");
+  s.segments = integer_in(a, "couch", "segments", 1, 64);
+  s.cushions = integer_in(a, "couch", "numCushions", 1, 16);
+  s.arms = a.boolean("arms");
+  s.bottom_arms = a.boolean("bottomArms");
+  s.back_cushions = a.boolean("backCushions");
+  s.shape = a.boolean("shape");
+  s.offset = real_in(a, "couch", "offSet", -1.0, 16.0);
+  return s;
+}
+
+}  // namespace
 
 ProceduralModelDef couch_definition() {
   ProcedureSpec spec;
@@ -16,21 +36,9 @@ ProceduralModelDef couch_definition() {
                  param("backLength", 1.5), param("segments", 6),        param("numCushions", 3),
                  param("arms", true),      param("bottomArms", true),   param("backCushions", true),
                  param("shape", false),    param("offSet", 2.0)};
-  spec.out_body = [](const Arguments& a, const CallContext& context) {
-    SeatingShape s;
-    s.length = positive_real(a, "couch", "length");
-    s.depth = positive_real(a, "couch", "depth");
-    s.leg_length = positive_real(a, "couch", "legLength");
-    s.back_length = positive_real(a, "couch", "backLength");
-    s.segments = integer_in(a, "couch", "segments", 1, 64);
-    s.cushions = integer_in(a, "couch", "numCushions", 1, 16);
-    s.arms = a.boolean("arms");
-    s.bottom_arms = a.boolean("bottomArms");
-    s.back_cushions = a.boolean("backCushions");
-    s.shape = a.boolean("shape");
-    s.offset = real_in(a, "couch", "offSet", -1.0, 16.0);
-    return build_seating(s, context);
-  };
+  spec.uses_lod = true;  // as the chair's (seating.cpp)
+  spec.bounds = [](const Arguments& a) { return seating_bounds(couch_shape(a)); };
+  spec.out_body = [](const Arguments& a, const CallContext& context) { return build_seating(couch_shape(a), context); };
   ProceduralModel info{
       "couch",
       "Morkel's couch (Algorithm 6): the chair's construction numCushions cushions long, with back cushions and arms",
@@ -38,7 +46,7 @@ ProceduralModelDef couch_definition() {
        {"depth", "seat depth along z"},
        {"legLength", "leg length below the seat"},
        {"backLength", "back height above the seat"},
-       {"segments", "cells per cushion and axis (detail)"},
+       {"segments", "cells per cushion and axis (detail); the lod sets the cushions' sqrt(2) rounds (2 + lod, at least 1)"},
        {"numCushions", "seat cushions side by side, 1-16"},
        {"arms", "arm rests extruded from the back"},
        {"bottomArms", "with arms: posts from the seat bridged to the rests"},

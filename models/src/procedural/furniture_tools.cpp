@@ -55,6 +55,21 @@ std::pair<double, double> cell_range(int first, int last, int cells) {
   return {(first - 0.25) / cells, (last + 1.25) / cells};
 }
 
+std::array<Vec3, 2> padded_box(const Vec3& lo, const Vec3& hi, double fraction) {
+  const double pad = fraction * std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
+  return {lo - Vec3(pad, pad, pad), hi + Vec3(pad, pad, pad)};
+}
+
+int lod_levels(int levels, int lod, int max_levels) {
+  // In 64 bits: any int lod (a caller's, a camera's) without overflow.
+  return static_cast<int>(std::clamp<std::int64_t>(std::int64_t{levels} + lod, 0, max_levels));
+}
+
+int lod_steps(int steps, int lod) {
+  for (int i = 0; i > lod && steps > 1; --i) steps = (steps + 1) / 2;
+  return steps;
+}
+
 RatioBox ratio_box(std::pair<double, double> x, std::pair<double, double> y, std::pair<double, double> z) {
   return RatioBox{x.first, x.second, y.first, y.second, z.first, z.second};
 }

@@ -8,6 +8,7 @@
 #include "genmod/procedural/extrusion.hpp"
 #include "genmod/procedural/selection.hpp"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -35,6 +36,15 @@ inline constexpr std::pair<double, double> kAll{-0.01, 1.01};
 
 RatioBox ratio_box(std::pair<double, double> x, std::pair<double, double> y, std::pair<double, double> z);
 
+// Level of detail (camera.hpp: lod 0 is the model as its parameters say, each step below one
+// refinement fewer, each step above one more) for the furniture:
+// refinement levels (sqrt(2) rounds of a curved part): levels + lod, kept in [0, max_levels];
+int lod_levels(int levels, int lod, int max_levels);
+// the extrusion steps of a straight part (a leg that is a prism whatever its steps): `steps` at
+// lod >= 0 (more steps would add faces but no shape), halved (rounded up) per lod below 0, at
+// least 1. The part's shape is the same at every lod; only its face count changes.
+int lod_steps(int steps, int lod);
+
 // A model being built: the mesh and its named face sets (membership carried by face labels).
 struct Workpiece {
   PolyMesh mesh;
@@ -57,6 +67,11 @@ struct Workpiece {
 void attach_leg(Workpiece& w, const PolyMesh& leg, const FaceList& cell, double gap);
 // The same on a bare mesh.
 void attach_leg(PolyMesh& mesh, const PolyMesh& leg, const FaceList& cell, double gap);
+
+// The box [lo, hi] grown by `fraction` of its largest side on every side: the bounding boxes
+// the furniture declares for the camera (procedure.hpp) are worked out from the construction and
+// padded, since a box that is too large only costs a coarser cull.
+std::array<Vec3, 2> padded_box(const Vec3& lo, const Vec3& hi, double fraction = 0.05);
 
 // The union of face lists, in index order without repeats (selections that may overlap).
 FaceList merged(std::initializer_list<FaceList> lists);

@@ -11,7 +11,7 @@
 //
 // Numbers the thesis leaves out (its Arm, Leg, Head listings are missing): the gaps the bridges
 // span (0.08 head at the hips and neck, 0.1 head at the shoulders), the legs' top (0.7 x 0.78
-// head), foot (about 1.1 head long with the heel, 0.25 head high), the arms held out level (T pose).
+// head; 0.6 x 0.78 on the egg torso, whose hips lie closer together), foot (about 1.1 head long with the heel, 0.25 head high), the arms held out level (T pose).
 // tummy and butt are lengths in metres added to the torso curves' belly and buttocks control
 // points, as in the listing; gender is not a parameter (the listing declares it unused).
 // Every length is a multiple of the head unit, so two heights give the same mesh scaled.
@@ -77,7 +77,7 @@ PolyMesh build_human(const Arguments& a, const CallContext& context) {
   for (const char* side : {"right", "left"}) {
     const FaceList& hip = std::string(side) == "right" ? hip_r : hip_l;
     const std::shared_ptr<const PolyMesh> leg_part = context.call_shared("leg", {{"height", leg_h},
-                                             {"width", 0.7 * H},
+                                             {"width", (cubical ? 0.7 : 0.6) * H},
                                              {"depth", 0.78 * H},
                                              {"segments", 4},
                                              {"footLength", 0.55 * H},

@@ -19,6 +19,9 @@
 // 0.7 of a cell long (it stays within the free cell in front), three sqrt(2) levels with
 // smoothing 0.5 on the leg. legColumns 0 chooses round(sqrt(numLegs * width / length)) columns
 // (layout cells about square), at least 2 so that the chest stands on both sides.
+//
+// Level of detail (camera.hpp): the legs get legSubdivisions + lod sqrt(2) rounds (0-6); the
+// chest, all flat faces but the lid's arch, is the same at every lod.
 #include "furniture_tools.hpp"
 #include "procedural_model_defs.hpp"
 
@@ -68,6 +71,18 @@ PolyMesh build_chest(const Arguments& a, const CallContext&) {
   return std::move(w.mesh);
 }
 
+// The chest [0, width] x [0, 0.4 height + one lid cell] x [0, length] with the lid's arch
+// (its control point 2 lidHeight up, so the apex is lidHeight up) on legs reaching 0.35 height
+// down; every leg and its foot's toes stay under the base (the toes end half a cell before the
+// next layout row).
+std::array<Vec3, 2> luggage_bounds(const Arguments& a) {
+  const double height = positive_real(a, "luggage", "height");
+  const double width = positive_real(a, "luggage", "width");
+  const double length = positive_real(a, "luggage", "length");
+  const double lid_height = real_in(a, "luggage", "lidHeight", 0.0, 64.0 * height);
+  return padded_box(Vec3(0, -0.35 * height, 0), Vec3(width, 0.4 * height * (1.0 + 1.0 / kBodyCells) + lid_height, length));
+}
+
 PolyMesh build_luggage(const Arguments& a, const CallContext& context) {
   const double height = positive_real(a, "luggage", "height");
   const double width = positive_real(a, "luggage", "width");
@@ -75,7 +90,7 @@ PolyMesh build_luggage(const Arguments& a, const CallContext& context) {
   const int num_legs = integer_in(a, "luggage", "numLegs", 0, 1024);
   int columns = integer_in(a, "luggage", "legColumns", 0, 1024);
   const double lid_height = real_in(a, "luggage", "lidHeight", 0.0, 64.0 * height);
-  const int leg_levels = integer_in(a, "luggage", "legSubdivisions", 0, 6);
+  const int leg_levels = lod_levels(integer_in(a, "luggage", "legSubdivisions", 0, 6), context.lod(), 6);
   if (columns == 0)
     columns = num_legs < 2 ? 1 : std::max(2, static_cast<int>(std::lround(std::sqrt(num_legs * width / length))));
   if (num_legs > 0 && columns > num_legs)
@@ -118,10 +133,12 @@ ProceduralModelDef luggage_definition() {
   ProcedureSpec spec;
   spec.name = "luggage";
   spec.mode = Mode::Out;
-  // Its mesh depends only on its arguments and the seed its legs inherit (the key; it uses
-  // neither the level of detail nor the transform), so a repeated luggage is one hit, as a
-  // repeated tree is (claim 12: "called again: 0 new misses").
+  // Its mesh depends only on its arguments, the seed its legs inherit and the lod (the key; it
+  // does not use the transform), so a repeated luggage is one hit, as a repeated tree is
+  // (claim 12: "called again: 0 new misses").
   spec.cacheable = true;
+  spec.uses_lod = true;
+  spec.bounds = luggage_bounds;
   spec.params = {param("height", 2.0),   param("width", 1.0),      param("length", 2.0),
                  param("numLegs", 4),    param("legColumns", 0),   param("lidHeight", 0.4),
                  param("legSubdivisions", 3)};
@@ -135,7 +152,7 @@ ProceduralModelDef luggage_definition() {
        {"numLegs", "legs, 0-1024, in rows of legColumns under the base"},
        {"legColumns", "legs per row across x (0: about square layout cells, at least 2)"},
        {"lidHeight", "how far the lid's arch rises above the chest"},
-       {"legSubdivisions", "sqrt(2) levels of each leg (passed to `leg`), 0-6"}}};
+       {"legSubdivisions", "sqrt(2) levels of each leg (passed to `leg`), 0-6; the lod adds to it (at most 6)"}}};
   return {std::move(spec), std::move(info)};
 }
 

@@ -5,6 +5,7 @@
 
 #include "genmod/procedural/affine.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace genmod::models {
@@ -69,16 +70,64 @@ ProcedureRegistry& procedural_registry() {
   return registry;
 }
 
-Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args, std::int64_t seed, int lod) {
-  Context context;
-  context.seed = seed;
-  context.lod = lod;
+namespace {
+
+Mesh meshed_z_up(const std::string& name, const NamedArgs& args, const Context& context) {
   PolyMesh mesh = procedural_registry().call(name, args, context);
   // y up -> z up: (x, y, z) -> (x, -z, y), a rotation (orientation kept).
   Affine to_z_up;
   to_z_up.m = {{{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}}};
   apply_affine(to_z_up, mesh);
   return to_triangle_mesh(mesh);
+}
+
+Vec3 to_y_up(const Vec3& v) { return Vec3(v[0], v[2], -v[1]); }
+
+}  // namespace
+
+Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args, std::int64_t seed, int lod) {
+  Context context;
+  context.seed = seed;
+  context.lod = lod;
+  return meshed_z_up(name, args, context);
+}
+
+Camera camera_looking_at(const Vec3& eye, const Vec3& target) {
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(eye[k]) || !std::isfinite(target[k]))
+      throw std::invalid_argument("camera: the eye and the target must be finite points");
+  Camera c;
+  c.position = eye;
+  c.direction = target - eye;
+  c.up = Vec3(0, 0, 1);
+  if (c.direction.sqrnorm() == 0) throw std::invalid_argument("camera: the eye and the target are the same point");
+  if (c.direction[0] == 0 && c.direction[1] == 0)
+    throw std::invalid_argument("camera: the view is vertical; the camera's up is +z, so look at a target that is "
+                                "not straight above or below the eye");
+  return c;
+}
+
+Camera procedure_frame_camera(const Camera& z_up) {
+  Camera c = z_up;
+  c.position = to_y_up(z_up.position);
+  c.direction = to_y_up(z_up.direction);
+  c.up = to_y_up(z_up.up);
+  return c;
+}
+
+std::optional<BoxView> procedural_model_view(const std::string& name, const NamedArgs& args, const Camera& camera) {
+  const Camera c = procedure_frame_camera(camera);
+  check_camera(c);
+  const std::optional<std::array<Vec3, 2>> box = procedural_registry().bounds(name, args);
+  if (!box) return std::nullopt;
+  return view_of_box(c, *box);
+}
+
+Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args, std::int64_t seed, const Camera& camera) {
+  Context context;
+  context.seed = seed;
+  context.camera = procedure_frame_camera(camera);
+  return meshed_z_up(name, args, context);
 }
 
 }  // namespace genmod::models

@@ -12,17 +12,68 @@
 #include "genmod/procedural/stitching.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace genmod::models::detail {
+namespace {
+
+// The disc base (the chair's cubic = false, Experiment 3's "chair from a disc"): the finished
+// seating is drawn onto a round seat by a radial map in x and z about the seat's middle, in
+// coordinates where the seat rectangle is [-1, 1]^2: p -> p max(|u|, |v|) / |p|. It takes the
+// rectangle's outline to the inscribed ellipse and every ray from the middle to itself, scaled
+// by a factor in [1/sqrt 2, 1] that depends only on the ray's direction, so it is one-to-one
+// everywhere and moves no point away from the middle (the bounds still hold). y is untouched,
+// so walls stay vertical and horizontal faces horizontal: every face stays planar, and the
+// construction's cells, parts and counts are those of the square chair.
+// The thesis makes its Disc by smoothing subdivision of a box instead; a subdivided grid would
+// no longer have the cells the selections here are made of.
+void round_the_base(PolyMesh& mesh, double length, double depth) {
+  const double cx = 0.5 * length, cz = 0.5 * depth;
+  for (auto v : mesh.vertices()) {
+    Vec3 p = mesh.point(v);
+    const double u = (p[0] - cx) / cx, w = (p[2] - cz) / cz, r = std::hypot(u, w);
+    if (r == 0) continue;  // the middle stays
+    const double scale = std::max(std::abs(u), std::abs(w)) / r;
+    p[0] = cx + cx * u * scale;
+    p[2] = cz + cz * w * scale;
+    mesh.set_point(v, p);
+  }
+}
+
+// The cushions' (and the feet's legs') sqrt(2) rounds at most: each round doubles a cushion's
+// faces, so lod +4 has 16 times the cushion faces of lod 0.
+constexpr int kMaxSmoothLevels = 6;
+}  // namespace
+
+std::array<Vec3, 2> seating_bounds(const SeatingShape& s) {
+  const int n = s.segments;
+  const double lu = s.length / n, du = s.depth / n, hu = s.back_length / n, thick = std::min(lu, du);
+  // Down to the legs' (or feet's soles') y = -leg_length; up to the back's top raised by the
+  // arch's control point (the apex rises half of it) or the cushions (0.75 du on the seat),
+  // whichever is higher; along z from the back (0) to the seat's front, where a front foot's
+  // toes reach half a depth unit further (0.3 du from its cell's middle to the leg's front,
+  // 0.7 du of foot).
+  const double top = thick + std::max(s.back_length + std::max(s.offset, 0.0) * hu, 0.75 * du);
+  return padded_box(Vec3(0, -s.leg_length, 0), Vec3(s.cushions * s.length, top, s.depth + (s.feet ? 0.5 * du : 0.0)));
+}
 
 PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
   const int n = s.segments;
   const int nx = n * s.cushions;  // seat cells along x
-  const double lu = s.length / n, du = s.depth / n, hu = s.back_length / n, gu = s.leg_length / n;
+  const double lu = s.length / n, du = s.depth / n, hu = s.back_length / n;
   // The thesis starts from a cube of the unit; with length != depth the units differ, and the
   // seat is as thick as the smaller one.
   const double thick = std::min(lu, du);
+  // Level of detail (furniture_tools.hpp): the cushions' and the feet's legs' sqrt(2) rounds
+  // (2 at lod 0) and the legs' extrusion steps follow the context's lod; everything else (the
+  // cells that decide which parts exist) does not, so every lod has the same parts. A cushion
+  // keeps at least one round: unrounded, its box would touch an arm post along an edge (the
+  // post stands on the cell diagonal to the cushion's front corner), which is no longer a
+  // 2-manifold surface; one round pulls its corners in.
+  const int leg_levels = lod_levels(2, context.lod(), kMaxSmoothLevels);
+  const int cushion_levels = std::max(1, leg_levels);
+  const int leg_steps = lod_steps(n, context.lod());
 
   Workpiece w;
   // 1. The seat: one box, its +x face extruded nx - 1 times by a length unit, then the whole
@@ -48,7 +99,7 @@ PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
     const std::string id = "cushion" + std::to_string(k + 1);
     w.extrude_chain(w.name(id, w.select("seat", ratio_box(cell_range(x0, x1, nx), kHigh, cell_range(z0, z1, n)))),
                     Vec3(0, 0.75 * du, 0), 1);
-    sqrt2_subdivide(w.mesh, w.faces(id), 2, 1.0);
+    sqrt2_subdivide(w.mesh, w.faces(id), cushion_levels, 1.0);
     w.sets.update(w.mesh);
   }
 
@@ -65,7 +116,7 @@ PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
       const std::string id = "backcushion" + std::to_string(k + 1);
       w.extrude_chain(w.name(id, w.select("back", ratio_box(cell_range(x0, x1, nx), cell_range(y0, y1, n), kHigh))),
                       Vec3(0, 0, 0.5 * du), 1);
-      sqrt2_subdivide(w.mesh, w.faces(id), 2, 1.0);
+      sqrt2_subdivide(w.mesh, w.faces(id), cushion_levels, 1.0);
       w.sets.update(w.mesh);
     }
 
@@ -85,7 +136,7 @@ PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
     } else {
       const FaceList legs = merged({w.select("seat", corners[0]), w.select("seat", corners[1]),
                                     w.select("seat", corners[2]), w.select("seat", corners[3])});
-      w.extrude_chain(w.name("legs", legs), Vec3(0, -gu, 0), n);
+      w.extrude_chain(w.name("legs", legs), Vec3(0, -s.leg_length / leg_steps, 0), leg_steps);
     }
   }
 
@@ -150,11 +201,14 @@ PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
   //    unit long (numbers the listing takes from its human Leg).
   if (feet) {
     const double gap = 0.25 * std::min(lu, du);
+    // The leg's own default of 2 sqrt(2) rounds at lod 0 (passed explicitly: the same resolved
+    // arguments, so the same cache entry, as leaving it out).
     const NamedArgs leg_args{{"height", s.leg_length - gap}, {"width", 0.6 * lu}, {"depth", 0.6 * du},
-                             {"footLength", 0.7 * du}};
+                             {"footLength", 0.7 * du}, {"subdivisions", leg_levels}};
     for (const FaceList& cell : foot_cells) attach_leg(w, *context.call_shared("leg", leg_args), cell, gap);
   }
   w.mesh.garbage_collection();
+  if (s.disc) round_the_base(w.mesh, s.cushions * s.length, s.depth);
   return std::move(w.mesh);
 }
 

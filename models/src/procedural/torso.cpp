@@ -12,8 +12,11 @@
 // with tummy and butt displacing one control point each) of the listing move the outermost
 // layer of faces of each side; last, one adaptive sqrt(2) level with smoothing 0.5 rounds
 // everything but the attachment faces.
-// Egg (cubical = false, the base-shape experiment): the same block subdivided twice with
-// smoothing 1 (everything but the attachment faces), without curves.
+// Egg (cubical = false, the base-shape experiment): the same block drawn onto its inscribed
+// ellipsoid by a radial map (every vertex onto the ellipsoid along its ray from the centre),
+// then subdivided twice with smoothing 1 (everything but the attachment faces), without
+// curves. The thesis's Egg is a smoothed parallelepiped; smoothing alone only rounds the edges
+// of a block this finely divided, so the map makes the egg and the rounds smooth it.
 //
 // Deviations (research/morkel.md section 7): items 1-3: real division for head/3, the extents
 // (max - min) for the listing's minX + maxX, and the absolute offsets 0.02 and 0.1 as 0.0875 and
@@ -27,6 +30,9 @@
 #include "genmod/procedural/bezier_curve.hpp"
 #include "genmod/procedural/curve_shaping.hpp"
 #include "genmod/procedural/sqrt2_subdivision.hpp"
+
+#include <algorithm>
+#include <cmath>
 
 namespace genmod::models::detail {
 namespace {
@@ -73,6 +79,21 @@ void fit_to_curves(Workpiece& w, double head, double tummy, double butt) {
   shape_to_curve(w.mesh, w.select("", ratio_box(kAll, kAll, kLow)), BezierCurve(back), Vec3(0, 0, -1), Vec3(1, 0, 0));
 }
 
+// The egg's shape: the block [centre - half, centre + half] drawn onto its inscribed ellipsoid
+// by the radial map p -> p max(|u|, |v|, |w|) / |p| in coordinates where the block is [-1, 1]^3
+// (one-to-one, every ray from the centre to itself), so the cells and the limbs' faces stay.
+void to_ellipsoid(PolyMesh& mesh, const Vec3& centre, const Vec3& half) {
+  for (auto v : mesh.vertices()) {
+    Vec3 q = mesh.point(v) - centre;
+    for (int k = 0; k < 3; ++k) q[k] /= half[k];
+    const double r = q.norm();
+    if (r == 0) continue;
+    q *= std::max({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}) / r;
+    for (int k = 0; k < 3; ++k) q[k] *= half[k];
+    mesh.set_point(v, centre + q);
+  }
+}
+
 PolyMesh build_torso(const Arguments& a, const CallContext&) {
   const char* P = "torso";
   const double height = positive_real(a, P, "height"), length = positive_real(a, P, "length"),
@@ -100,6 +121,7 @@ PolyMesh build_torso(const Arguments& a, const CallContext&) {
     fit_to_curves(w, head, tummy, butt);
     sqrt2_subdivide(w.mesh, w.faces("torso"), 1, 0.5);
   } else {
+    to_ellipsoid(w.mesh, Vec3(0, height / 2, 0), Vec3(length / 2, height / 2, width / 2));
     sqrt2_subdivide(w.mesh, w.faces("torso"), 2, 1.0);
   }
   return std::move(w.mesh);
@@ -127,7 +149,7 @@ ProceduralModelDef torso_definition() {
        {"head", "the head unit the curves are measured in"},
        {"tummy", "moves the belly's control point forward (-0.1..1 width)"},
        {"butt", "moves the buttocks' control points back (-0.1..1 width)"},
-       {"cubical", "the extruded block (true) or the smoothed egg (false)"}}};
+       {"cubical", "the extruded block (true) or the egg (false): the block on its inscribed ellipsoid, smoothed"}}};
   return {std::move(spec), std::move(info)};
 }
 

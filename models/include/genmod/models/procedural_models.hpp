@@ -42,10 +42,14 @@
 //            order (levels misses per tree). Branches are separate closed components a small
 //            gap apart (no overlaps).
 //
-// Level of detail (camera.hpp): the tree (levels + lod levels) and the human (subdivisions +
-// lod sqrt(2) levels) read the context's lod and declare it for the cache key, and both declare
-// bounding boxes, so a call with a camera builds them coarser when they are small on screen and
-// not at all when out of view. Without a camera (lod 0) every model is as its parameters say.
+// Level of detail (camera.hpp): the tree (levels + lod levels), the human (subdivisions + lod
+// sqrt(2) levels), the chair and the couch (2 + lod sqrt(2) levels of the feet's legs and of the
+// cushions, at least 1 for a cushion), the round table (subdivisions + lod) and the luggage (legSubdivisions + lod
+// levels of its legs) read the context's lod and declare it for the cache key; below lod 0 the
+// chair's, couch's and table's straight legs are also extruded in fewer steps (same shape,
+// fewer faces). All six declare bounding boxes, so a call with a camera builds them coarser when
+// they are small on screen and not at all when out of view. Without a camera (lod 0) every
+// model is as its parameters say.
 //
 // Every model's mesh is closed, 2-manifold, oriented outward and free of self-intersections
 // (tests/models/procedural_models_test.cpp checks this with the CGAL validator), and the same
@@ -65,6 +69,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -98,7 +103,29 @@ ProcedureRegistry& procedural_registry();
 // procedures' frame (y up, the front facing +z, as in the thesis's Java3D) to genmod's z up
 // (x, y, z) -> (x, -z, y): the front faces -y, towards `genmod preview`'s viewpoint. The lod is
 // a refinement offset (camera.hpp): 0 as the parameters say, below 0 coarser for the models that
-// use it (tree, human), ignored by the others.
+// use it (tree, human, chair, couch, table, luggage), ignored by the others.
 Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args = {}, std::int64_t seed = 0, int lod = 0);
+
+// A camera at `eye` looking at `target`, +z up, in genmod's z-up frame, with camera.hpp's
+// defaults for the rest (640 x 480 pixels, lod -8..0): what `genmod mesh --camera` and Python's
+// procedural.mesh(camera=...) build. Throws std::invalid_argument for a non-finite point, an eye
+// at the target ("same point") or a vertical view ("vertical": the up would be the view).
+Camera camera_looking_at(const Vec3& eye, const Vec3& target);
+
+// A camera given in genmod's z-up frame (the frame of mesh_procedural_model's meshes and of
+// `genmod mesh --camera`) turned into the procedures' y-up frame, where the registry places
+// bounds: position, direction and up go through (x, y, z) -> (x, z, -y), the inverse of the
+// turn above; the other fields are kept.
+Camera procedure_frame_camera(const Camera& z_up);
+
+// How `camera` (z-up frame) sees the model's declared bounding box: the visibility and the lod
+// a call with that camera gets (view_of_box). nullopt when the model declares no bounds (the
+// camera then neither culls it nor sets its lod). Throws std::invalid_argument for a bad camera
+// (check_camera) or bad arguments.
+std::optional<BoxView> procedural_model_view(const std::string& name, const NamedArgs& args, const Camera& camera);
+
+// The model built with `camera` (z-up frame) in its context: at the lod the camera chooses for
+// its bounds, an empty mesh when the camera does not see them (procedure.hpp).
+Mesh mesh_procedural_model(const std::string& name, const NamedArgs& args, std::int64_t seed, const Camera& camera);
 
 }  // namespace genmod::models
