@@ -54,10 +54,12 @@ def test_ctrl_c_stops_a_long_minimization():
 def test_ctrl_c_stops_meshing_and_batches(tmp_path):
     tangle = gm.load_vm(os.path.join(os.path.dirname(__file__), "..", "..", "data", "tanglecube.vm"))
     box = np.array([[-2.5, 2.5]] * 3)
-    # min_feature 2e-4 would take minutes and gigabytes.
+    # min_feature 2e-4 would take minutes and gigabytes; 40 doorknobs at tolerance 1e-4 take
+    # minutes too. The bounds below only tell "stopped" from "ran to the end" (a loaded machine
+    # took 21 s for the batch, which stops between and within jobs); the file count is exact.
     elapsed = interrupted_after(0.5, lambda: gm.mesh_implicit(tangle, box, min_feature=2e-4, tolerance=1e-5))
-    assert elapsed < 15
+    assert elapsed < 60
     jobs = "\n".join(f"doorknob tolerance={1e-4 * (1 + k / 100)} out=knob_{k}.ply" for k in range(40))
     elapsed = interrupted_after(0.5, lambda: gm.batch.run(jobs, tmp_path, threads=1))
-    assert elapsed < 15
+    assert elapsed < 60
     assert len(list(tmp_path.iterdir())) < 40  # the jobs after the signal never ran
