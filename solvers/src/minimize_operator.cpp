@@ -5,11 +5,13 @@
 
 #include "genmod/kernel/custom_op.hpp"
 #include "genmod/kernel/interval_evaluator.hpp"
+#include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
 #include "genmod/solvers/aggregation.hpp"
 #include "genmod/solvers/constraint_solver.hpp"
 #include "genmod/solvers/minimizer.hpp"
 #include "implicit_partials.hpp"
+#include "minimizer_1d.hpp"
 #include "operator_arguments.hpp"
 
 #include <algorithm>
@@ -53,6 +55,13 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
     for (int i = kMaxInputs - 1; i >= 0 && scratch_ < 0; --i)
       if (!(used & (std::uint64_t{1} << i))) scratch_ = i;
     if (scratch_ >= 0) level_set_ = (objective_ <= x(scratch_)) && constraint_;
+    // One unknown and no constraint (a closest point): point values are polished to the root
+    // of df/dx and boxes enclosed without a search (minimizer_1d.hpp).
+    double always = 0.0;
+    if (unknowns_.size() == 1 && max_solutions_ == 0 && constraint_.is_constant(&always) && always != 0.0) {
+      fx_tape_ = std::make_shared<const Tape>(gradient[0], inputs_);
+      fxx_tape_ = std::make_shared<const Tape>(genmod::derivative(gradient[0], unknowns_[0]), inputs_);
+    }
   }
 
   std::string name() const override { return max_solutions_ ? "minimize-all" : "minimize"; }
@@ -61,6 +70,15 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
 
   void eval(std::span<const double> args, std::span<double> out) const override {
     std::fill(out.begin(), out.end(), kNaN);
+    if (fx_tape_ && std::all_of(args.begin(), args.end(), [](double a) { return std::isfinite(a); })) {
+      if (const auto q = detail::minimizer_1d(objective_1d(), args, epsilon_)) {
+        out[0] = *q;
+        std::vector<double> at{*q};
+        at.insert(at.end(), args.begin(), args.end());
+        out[1] = PointEvaluator().eval(*objective_tape_, at)[0];
+        return;
+      }
+    }
     Box box = domain_;
     for (double a : args) {
       if (!std::isfinite(a)) return;
@@ -70,6 +88,10 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
     const std::size_t n = unknowns_.size();
     if (r.infeasible || !r.feasible_found || !(r.minimum.width() <= epsilon_)) return;
     out[value_index()] = r.minimum.mid();
+    if (fx_tape_) {
+      out[0] = detail::polish_minimizer(objective_1d(), r.best_point[0], args);
+      return;
+    }
     if (!max_solutions_) {
       std::copy(r.best_point.begin(), r.best_point.begin() + static_cast<std::ptrdiff_t>(n), out.begin());
       return;
@@ -92,12 +114,23 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
   }
 
   void inclusion(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const override {
+    enclose(args, out, err);
+  }
+
+  // Continuous where the one-unknown enclosure proves the minimizer unique (minimizer_1d.hpp).
+  bool inclusion_continuous(std::span<const Interval> args, std::span<Interval> out,
+                            std::span<std::uint8_t> err) const override {
+    return enclose(args, out, err);
+  }
+
+  // The inclusion; true when the outputs are continuous on the box (see inclusion_continuous).
+  bool enclose(std::span<const Interval> args, std::span<Interval> out, std::span<std::uint8_t> err) const {
     const std::size_t n = unknowns_.size();
     for (const Interval& a : args) {
       if (a.is_empty()) {
         std::fill(out.begin(), out.end(), Interval::empty());
         for (auto& e : err) e |= kCertainError;
-        return;
+        return false;
       }
     }
     Box box = domain_;
@@ -110,7 +143,20 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
         if (max_solutions_) out[0] = Interval(0.0, static_cast<double>(slots()));
         out[value_index()] = ev.eval(*objective_tape_, box)[0];
         for (auto& e : err) e |= kMaybeError;
-        return;
+        return false;
+      }
+    }
+    const Interval margin(-epsilon_, epsilon_);
+    if (fx_tape_) {
+      // Point values are within delta = epsilon of the minimum (options()). The value has no
+      // error (no constraint: every point is feasible); the minimizer has none where it is
+      // unique (minimizer_1d finds it for every p), else a point value may fail.
+      const auto e = detail::enclose_minimizer_1d(objective_1d(), args, epsilon_, std::max(epsilon_, 0.01 * width(args)));
+      if (e) {
+        out[0] = intersect(e->minimizer + margin, domain_[0]);
+        if (!e->unique) err[0] |= kMaybeError;
+        out[1] = e->minimum + margin;
+        return e->unique;
       }
     }
     MinimizeOptions opt = options();
@@ -120,9 +166,8 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
     if (r.infeasible) {
       std::fill(out.begin(), out.end(), Interval::empty());
       for (auto& e : err) e |= kCertainError;
-      return;
+      return false;
     }
-    const Interval margin(-epsilon_, epsilon_);
     // Minimum value.
     double upper = ev.eval(*objective_tape_, box)[0].hi();
     bool everywhere = false;
@@ -153,7 +198,7 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
         out[first_slot() + j * n + k] = domain_[k];
         err[first_slot() + j * n + k] |= kMaybeError;
       }
-    if (!std::isfinite(out[vi].hi()) || scratch_ < 0) return;
+    if (!std::isfinite(out[vi].hi()) || scratch_ < 0) return false;
     SolveOptions sopt;
     sopt.epsilon = opt.epsilon;
     sopt.threads = 1;
@@ -168,6 +213,7 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
       const Interval slot = h.is_empty() ? Interval::empty() : intersect(h + margin, domain_[k]);
       for (std::size_t j = 0; j < slots(); ++j) out[first_slot() + j * n + k] = slot;
     }
+    return false;
   }
 
   Fn derivative(std::span<const Fn> args, int k) const override {
@@ -198,6 +244,8 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
   std::size_t first_slot() const noexcept { return max_solutions_ ? 1 : 0; }
   std::size_t value_index() const noexcept { return first_slot() + slots() * unknowns_.size(); }
 
+  detail::Objective1d objective_1d() const { return {*objective_tape_, *fx_tape_, *fxx_tape_, domain_[0]}; }
+
   MinimizeOptions options() const {
     MinimizeOptions opt;
     opt.epsilon = epsilon_;
@@ -214,6 +262,7 @@ class MinimizeOp : public CustomOp, public std::enable_shared_from_this<Minimize
   std::shared_ptr<const Tape> objective_tape_, constraint_tape_;
   std::vector<Fn> envelope_;  // df/d free_k over inputs_
   std::vector<Fn> minimizer_partials_;  // dx*/d free_k (dimension n) over inputs_
+  std::shared_ptr<const Tape> fx_tape_, fxx_tape_;  // df/dx, d2f/dx2: one unknown, no constraint only
   int scratch_ = -1;          // a coordinate holding the level U in level_set_
   Fn level_set_;              // objective <= x(scratch_) && constraint
 };

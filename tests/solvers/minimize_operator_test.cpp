@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -104,6 +105,68 @@ TEST(MinimizeOperator, InclusionContainsSampledValues) {
       EXPECT_TRUE(ym.contains(at(m, {0, p}))) << ym << " misses " << at(m, {0, p});
     }
   }
+}
+
+// One unknown without a constraint (the closest point of a curve) is enclosed without a search
+// per box: point values are in the enclosures on boxes of every width, for a convex objective,
+// a double well whose global minimizer jumps at p = 0, minima held at the domain's ends, and a
+// closest point on a closed curve (the minimizer wraps around at s = 0 = 1); and on a small
+// box of a convex objective the enclosure is about as wide as the minimizer's true range.
+TEST(MinimizeOperator, OneUnknownInclusionHoldsEveryPointValue) {
+  const double pi = std::numbers::pi;
+  const Fn s = x(0), p = x(1);
+  const Fn ellipse = cat({1.3 * cos(2 * pi * s), 0.7 * sin(2 * pi * s)});
+  const Fn circle = cat({2.0 * cos(2 * pi * p), 2.0 * sin(2 * pi * p)});
+  struct Case {
+    const char* name;
+    Fn f;
+    Interval domain, params;
+  };
+  const std::vector<Case> cases{
+      {"convex", objective(), Interval(-2, 2), Interval(-1.5, 1.5)},
+      {"double well", square(square(s) - 1.0) + 0.3 * p * s, Interval(-2, 2), Interval(-1, 1)},
+      {"ends", square(s - p), Interval(0, 1), Interval(-0.5, 1.5)},
+      {"closest point", square(ellipse[0] - circle[0]) + square(ellipse[1] - circle[1]), Interval(0, 1),
+       Interval(0, 1)},
+  };
+  std::mt19937 rng(23);
+  for (const Case& c : cases) {
+    const Fn v = minimum_value_operator(c.f, Fn(1.0), kUnknowns, {c.domain}, 1e-8);
+    const Fn m = minimize_operator(c.f, Fn(1.0), kUnknowns, {c.domain}, 1e-8);
+    const Tape tv(v), tm(m);
+    IntervalEvaluator iv;
+    for (double w : {0.3, 0.02, 1e-3, 1e-5}) {
+      std::uniform_real_distribution<double> u(c.params.lo(), c.params.hi() - w);
+      for (int i = 0; i < 6; ++i) {
+        const double a = u(rng);
+        const Interval box(a, a + w);
+        const Interval yv = iv.eval(tv, {box})[0];
+        const Interval ym = iv.eval(tm, {box})[0];
+        for (int k = 0; k <= 8; ++k) {
+          const double q = a + w * k / 8.0;
+          const double mq = at(m, {0, q}), vq = at(v, {0, q});
+          EXPECT_TRUE(ym.contains(mq)) << c.name << ": " << ym << " misses the minimizer " << mq << " at " << q;
+          EXPECT_TRUE(yv.contains(vq)) << c.name << ": " << yv << " misses the minimum " << vq << " at " << q;
+        }
+      }
+    }
+  }
+  // (x0 - x1)^2 + x1^2: the minimizer is x1, so over a box of width 1e-3 its range is 1e-3 wide.
+  // There the minimizer is unique: no error and continuous (Newton and the meshers' linear
+  // bound may use it); where the double well's minimizer jumps (p = 0) neither is claimed.
+  const Fn m = minimize_operator(objective(), Fn(1.0), kUnknowns, {Interval(-2, 2)}, 1e-8);
+  IntervalEvaluator iv;
+  const Interval ym = iv.eval(Tape(m), {Interval(0.3, 0.301)})[0];
+  EXPECT_TRUE(ym.contains(Interval(0.3, 0.301))) << ym;
+  EXPECT_LT(ym.width(), 1.05e-3) << ym;
+  EXPECT_EQ(iv.errors()[0], kNoError);
+  EXPECT_TRUE(iv.continuous());
+  const Fn jumps = minimize_operator(cases[1].f, Fn(1.0), kUnknowns, {cases[1].domain}, 1e-8);
+  const Interval yj = iv.eval(Tape(jumps), {Interval(-0.01, 0.01)})[0];
+  EXPECT_LT(yj.lo(), -0.9);
+  EXPECT_GT(yj.hi(), 0.9);
+  EXPECT_NE(iv.errors()[0], kNoError);
+  EXPECT_FALSE(iv.continuous());
 }
 
 TEST(MinimizeOperator, InfeasibleIsAnError) {
