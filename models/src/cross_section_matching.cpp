@@ -42,6 +42,7 @@ Model cross_section_matching_model() {
     return cat({section, height * x(1)});
   };
   m.periodic_u = true;
+  m.open = true;  // a band between the two curves, open at both of them
   return m;
 }
 

@@ -1,14 +1,17 @@
 #include "genmod/solvers/cross_section_matching.hpp"
 
+#include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/operators/integrate.hpp"
 #include "genmod/solvers/inverse_operator.hpp"
 #include "genmod/solvers/minimize_operator.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace genmod {
 namespace {
@@ -51,6 +54,39 @@ Fn match_polar_angle(const Fn& c1, const Fn& c2, int parm) {
   return compose(c1, parm, s);
 }
 
+namespace {
+
+// c(s) for s in [-1, 2] of a closed curve c on [0, 1]: c(s + 1) below 0, c(s - 1) above 1. The
+// arguments are clamped into [0, 1] so that no branch can fail (an interval evaluation
+// straddling 0 or 1 takes the hull of both branches: points near c(0) = c(1)).
+Fn wrapped(const Fn& c, int parm, const Fn& s) {
+  auto clamped = [](const Fn& t) { return min(max(t, Fn(0.0)), Fn(1.0)); };
+  const Fn below = compose(c, parm, clamped(s + 1.0)), inside = compose(c, parm, clamped(s));
+  const Fn above = compose(c, parm, clamped(s - 1.0));
+  return select(s < 0.0, below, select(s > 1.0, above, inside));
+}
+
+// The squared distance between inner at the search coordinate and outer (a smooth objective
+// with the distance's minimizers).
+Fn squared_distance(const Fn& candidate, const Fn& outer) {
+  Fn squared = Fn(0.0);
+  for (std::size_t j = 0; j < candidate.dim(); ++j) squared += square(candidate[j] - outer[j]);
+  return squared;
+}
+
+bool closed(const Fn& c, int parm) {
+  const std::vector<double> a = evaluate(compose(c, parm, Fn(0.0)), std::vector<double>{}),
+                            b = evaluate(compose(c, parm, Fn(1.0)), std::vector<double>{});
+  double size = 0.0, gap = 0.0;
+  for (std::size_t j = 0; j < a.size(); ++j) {
+    size = std::max({size, std::abs(a[j]), std::abs(b[j])});
+    gap = std::max(gap, std::abs(a[j] - b[j]));
+  }
+  return gap <= 1e-12 * std::max(size, 1.0);
+}
+
+}  // namespace
+
 Fn reparameterize_to_closest(const Fn& inner, const Fn& outer, int parm, double epsilon) {
   constexpr const char* op = "reparameterize_to_closest";
   require_curve(op, inner, "inner", parm, 0);
@@ -60,12 +96,23 @@ Fn reparameterize_to_closest(const Fn& inner, const Fn& outer, int parm, double 
   const std::uint64_t used = inner.input_mask() | outer.input_mask();
   if (used == ~std::uint64_t{0}) fail(op, "no free coordinate left for the search variable");
   const int s = std::countr_one(used);
-  const Fn candidate = compose(inner, parm, x(s));
-  Fn squared = Fn(0.0);  // the squared distance: the same minimizer as the distance, and smooth
-  for (std::size_t j = 0; j < inner.dim(); ++j) squared += square(candidate[j] - outer[j]);
   const int unknowns[] = {s};
-  const Fn closest = minimize_operator(squared, Fn(1.0), unknowns, Box{Interval(0.0, 1.0)}, epsilon);
-  return compose(inner, parm, closest);
+  const Fn closest = minimize_operator(squared_distance(compose(inner, parm, x(s)), outer), Fn(1.0), unknowns,
+                                       Box{Interval(0.0, 1.0)}, epsilon);
+  if (!(inner.inputs() == std::vector<int>{parm} && outer.inputs() == std::vector<int>{parm} && closed(inner, parm) &&
+        closed(outer, parm)))
+    return compose(inner, parm, closest);
+  // Closed curves: s*(u) goes once around inner as u goes around outer, so on [0, 1] it jumps
+  // from 1 to 0 somewhere, and there the closest points near s = 0 and near s = 1 tie. The search
+  // follows u instead: s = u + c + t with t in [-1/2, 1/2] and c = s*(0), inner wrapped around
+  // its seam, so t*(u) stays inside its range and is continuous while the closest point stays
+  // within half a turn of u + c (the minimize operator then certifies it unique).
+  const double c = evaluate(compose(closest, parm, Fn(0.0)), std::vector<double>{})[0];
+  if (!std::isfinite(c)) return compose(inner, parm, closest);
+  const Fn along = x(parm) + c + x(s);
+  const Fn offset = minimize_operator(squared_distance(wrapped(inner, parm, along), outer), Fn(1.0), unknowns,
+                                      Box{Interval(-0.5, 0.5)}, epsilon);
+  return wrapped(inner, parm, x(parm) + c + offset);
 }
 
 }  // namespace genmod
