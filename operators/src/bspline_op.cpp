@@ -361,8 +361,8 @@ void RationalDerivativeOp::eval(std::span<const double> args, std::span<double> 
   const double w = h0[d];
   for (int j = 1; j <= order_; ++j)
     for (int e = 0; e < d; ++e) {
-      double num = hv[j][e] - hv[1][d] * c[j - 1][e] * j;  // order 1: (A' - w' c) / w
-      if (j == 1) num = hv[1][e] - hv[1][d] * c[0][e];
+      // (j w') c^(j-1) first: at order 1 the quotient rule's (A' - w' c) / w, bit for bit.
+      double num = hv[j][e] - j * hv[1][d] * c[j - 1][e];
       for (int i = 2; i <= j; ++i) num -= binomial(j, i) * hv[i][d] * c[j - i][e];
       c[j][e] = num / w;
     }
