@@ -86,7 +86,7 @@ void bind_offsets_and_paths(py::module_& m) {
   m.def("normal2d", &normal2d, py::arg("curve"), py::arg("parm") = 0, "(-c1', c0'), unnormalized.");
   m.def("offset_curve", &offset_curve, py::arg("curve"), py::arg("r"), py::arg("parm") = 0,
         "c + r normalize(normal2d(c)).");
-  m.def("offset_product", &offset_product, py::arg("cross"), py::arg("profile"), py::arg("cross_parm") = 0,
+  m.def("offset_product", static_cast<Fn (*)(const Fn&, const Fn&, int)>(&offset_product), py::arg("cross"), py::arg("profile"), py::arg("cross_parm") = 0,
         "(c(u) + d1(v) n(u), d2(v)): a closed cross section offset by d1 and lifted to height d2.");
   m.def("closed_offset", &closed_offset, py::arg("curve"), py::arg("r"), py::arg("parm") = 0,
         "The boundary of the points within r of an open planar curve, counter-clockwise.");

@@ -9,16 +9,16 @@
 // -thickness/2) a quarter circle out to the wall (d1 = 0), straight up the wall, and a
 // quarter circle back in to the top face. The top and bottom faces are the planar areas
 // bounded by the cross section offset inward by edge_radius (thesis 6.5), the model's extra
-// patches (offset_plate_faces): each a Coons patch whose four boundary arcs are the sides'
-// top (v = 1) or bottom (v = 0) edge split at the midpoints of the four rounded corners, so
-// its edges are the sides' edges point for point and the three patches close the plate.
+// patches (offset_plate_faces): each the fan of segments from the centre (0, 0) to the sides'
+// top (v = 1) or bottom (v = 0) edge, F(u, s) = (1 - s) E(u) (top), with the sides' own u, so
+// its outer edge is the sides' edge point for point (glued whole, not in parts) and the three
+// patches close the plate. The fan is one-to-one because the edge is star-shaped about the
+// centre: E x E' > 0 all round, least in the notches (offset_plate_faces explains).
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/offset.hpp"
 
-#include "coons_face.hpp"
 #include "model_definitions.hpp"
 
-#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -29,16 +29,11 @@ namespace genmod::models {
 namespace {
 constexpr double kMinConvexRadius = 0.1;  // the cross section's notch fillets
 
-// Parameters of curves/offset_plate_cross.crv at the midpoints of its four rounded corners
-// (the middle of each corner's rational quadratic span, between the knots 0.12495... and
-// 0.17402... and their mirror images): the Coons patches' corners, counterclockwise from the
-// bottom-right corner (the curve starts at the middle of the bottom edge).
-constexpr double kCornerU = 0.5 * (0.12495280079083977 + 0.17402165091708616);
-constexpr std::array<double, 4> kCorners{kCornerU, 0.5 - kCornerU, 0.5 + kCornerU, 1.0 - kCornerU};
-
 // The sides Fn of (u, v).
 Fn plate_sides(const ParameterValues& p) {
-  return offset_product(offset_plate_cross(p)(x(0)), offset_plate_profile(p)(x(1)), 0);
+  // The Curve form: the section joins lines and arcs at double knots (C^0 in u, tangent-
+  // continuous in space), where normalize(normal2d(c)) has no finite enclosure.
+  return offset_product(offset_plate_cross(p), x(0), offset_plate_profile(p)(x(1)));
 }
 
 }  // namespace
@@ -68,10 +63,22 @@ Curve offset_plate_profile(const ParameterValues& p) {
 }
 
 std::vector<ModelPatch> offset_plate_faces(const ParameterValues& p) {
+  // Star-shaped about the centre: on a notch (a concave arc about (1, 0) of radius
+  // R = 0.2 + edge_radius on the faces' edge, at angles 180 +- 70.5 degrees about its centre)
+  // E x E' is proportional to -cos(angle) - R, positive while |angle - 180| < acos(R), which
+  // is over 72.5 degrees for any edge_radius < 0.1; on the fillets (centres (0.9, +-0.283),
+  // radius 0.1 - edge_radius) it is at least 0.033 + that radius; the corners and straight
+  // sides face the centre. So each segment from the centre meets the edge once, and the fan
+  // covers the face once. The pole (s = 1 on the top, s = 0 on the bottom) is one point.
   const Fn sides = plate_sides(p);
-  // Top seen from above, bottom from below: both normals point out of the plate.
-  return {ModelPatch{detail::coons_face(compose(sides, 1, Fn(1.0)), kCorners)},
-          ModelPatch{detail::coons_face_flipped(compose(sides, 1, Fn(0.0)), kCorners)}};
+  const Fn top = compose(sides, 1, Fn(1.0)), bottom = compose(sides, 1, Fn(0.0));
+  // Top F = (1 - s) E: F_u x F_s = (1 - s) E x E', along +z; bottom F = s E: -s E x E', along
+  // -z. Both point out of the plate.
+  const Fn in = 1.0 - x(1), out = x(1);
+  auto fan = [](const Fn& edge, const Fn& scale) {
+    return ModelPatch{cat({scale * edge[0], scale * edge[1], edge[2]}), Interval(0.0, 1.0), Interval(0.0, 1.0), true};
+  };
+  return {fan(top, in), fan(bottom, out)};
 }
 
 namespace detail {

@@ -1,5 +1,7 @@
 #include "bspline_op.hpp"
 
+#include "unit_tangent_op.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -12,12 +14,30 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+// Orders of derivative a RationalDerivativeOp evaluates in fixed arrays (c, c', ..., c^(k)).
+constexpr int kMaxOrderTerms = 16;
 
 [[noreturn]] void bad(const std::string& kind, const std::string& what) {
   throw std::invalid_argument("genmod: " + kind + ": " + what);
 }
 
 }  // namespace
+
+std::vector<double> jump_knots(const std::vector<double>& knots, int degree, int num_points, int order) {
+  std::vector<double> out;
+  for (int k = degree + 1; k < num_points;) {
+    int m = 1;
+    while (k + m < num_points && knots[static_cast<std::size_t>(k + m)] == knots[static_cast<std::size_t>(k)]) ++m;
+    if (m > degree - order) out.push_back(knots[static_cast<std::size_t>(k)]);
+    k += m;
+  }
+  return out;
+}
+
+bool jump_free(const std::vector<double>& jumps, double a, double b) noexcept {
+  const auto it = std::upper_bound(jumps.begin(), jumps.end(), a);  // the first jump > a
+  return it == jumps.end() || *it > b;
+}
 
 BSplineOp::BSplineOp(int dim, int degree, std::vector<double> knots, std::vector<double> points,
                      std::vector<double> weights, std::string kind)
@@ -87,12 +107,15 @@ BSplineOp::BSplineOp(int dim, int degree, std::vector<double> knots, std::vector
   }
   // Continuity: a piece boundary is C^(p - m) for an interior knot of multiplicity m, so the
   // curve jumps where m > p (and every boundary of a degree-0 curve is a jump).
-  continuous_ = degree_ >= 1;
-  for (int k = degree_ + 1; k < n_ && continuous_; ++k) {
-    int m = 1;
-    while (k + m < n_ && knots_[static_cast<std::size_t>(k + m)] == knots_[static_cast<std::size_t>(k)]) ++m;
-    if (m > degree_) continuous_ = false;
-  }
+  jumps_ = jump_knots(knots_, degree_, n_, 0);
+  continuous_ = degree_ >= 1 && jumps_.empty();
+}
+
+bool BSplineOp::inclusion_continuous(std::span<const Interval> args, std::span<Interval> out,
+                                     std::span<std::uint8_t> err) const {
+  inclusion(args, out, err);
+  if (degree_ == 0) return false;
+  return args[0].is_empty() || jump_free(jumps_, args[0].lo(), args[0].hi());
 }
 
 void BSplineOp::check_magnitudes() const {
@@ -252,20 +275,173 @@ std::shared_ptr<const BSplineOp> BSplineOp::homogeneous_op() const {
   return homogeneous_;
 }
 
+std::shared_ptr<const RationalDerivativeOp> BSplineOp::rational_derivative_op() const {
+  std::call_once(rational_derivative_once_, [this] {
+    auto copy = std::make_shared<BSplineOp>(dim_, degree_, knots_, points_, weights_, kind_);
+    rational_derivative_ = std::make_shared<RationalDerivativeOp>(std::move(copy), 1);
+  });
+  return rational_derivative_;
+}
+
+std::shared_ptr<const UnitTangentOp> BSplineOp::unit_tangent_op() const {
+  std::call_once(unit_tangent_once_, [this] { unit_tangent_ = std::make_shared<UnitTangentOp>(*this); });
+  return unit_tangent_;
+}
+
 Fn BSplineOp::derivative(std::span<const Fn> args, int) const {
   if (!rational()) {
     if (degree_ == 0) return cat(std::vector<Fn>(static_cast<std::size_t>(dim_), Fn(0.0)));
     return genmod::apply_custom(std::shared_ptr<const CustomOp>(derivative_op()), args);
   }
-  // c = A / w with (A, w) a polynomial B-spline H: c' = (A' - w' c) / w.
-  const auto h = homogeneous_op();
-  const Fn hv = genmod::apply_custom(std::shared_ptr<const CustomOp>(h), args);
-  const Fn hd = h->derivative(args, 0);
-  const Fn c = genmod::apply_custom(std::shared_ptr<const CustomOp>(shared_from_this()), args);
-  std::vector<Fn> parts;
-  const std::size_t d = static_cast<std::size_t>(dim_);
-  for (std::size_t j = 0; j < d; ++j) parts.push_back((hd[j] - hd[d] * c[j]) / hv[d]);
-  return cat(parts);
+  return genmod::apply_custom(std::shared_ptr<const CustomOp>(rational_derivative_op()), args);
+}
+
+// H^(i) for i = 0 .. min(order, degree): the homogeneous B-spline and its derivatives.
+std::vector<std::shared_ptr<const BSplineOp>> RationalDerivativeOp::homogeneous_derivatives(
+    const std::shared_ptr<const BSplineOp>& h, int order) {
+  std::vector<std::shared_ptr<const BSplineOp>> out{h};
+  while (static_cast<int>(out.size()) <= std::min(order, h->degree())) {
+    out.push_back(out.back()->derivative_op());
+  }
+  return out;
+}
+
+namespace {
+
+double binomial(int n, int k) {
+  double b = 1.0;
+  for (int i = 1; i <= k; ++i) b = b * (n - k + i) / i;
+  return b;
+}
+
+}  // namespace
+
+RationalDerivativeOp::RationalDerivativeOp(std::shared_ptr<const BSplineOp> curve, int order)
+    : RationalDerivativeOp(curve, homogeneous_derivatives(curve->homogeneous_op(), order), order) {}
+
+RationalDerivativeOp::RationalDerivativeOp(std::shared_ptr<const BSplineOp> curve,
+                                           std::vector<std::shared_ptr<const BSplineOp>> h, int order)
+    : curve_(std::move(curve)), h_(std::move(h)), order_(order) {
+  if (order < 1 || order >= kMaxOrderTerms)
+    throw std::domain_error("genmod: " + curve_->name() + ": derivatives of order " + std::to_string(order) +
+                            " are not supported (at most " + std::to_string(kMaxOrderTerms - 1) + ")");
+  // c^(order) is C^(p - m - order) at an interior knot of multiplicity m.
+  jumps_ = jump_knots(curve_->knots(), curve_->degree(), curve_->num_points(), order);
+  continuous_ = jumps_.empty();
+}
+
+bool RationalDerivativeOp::inclusion_continuous(std::span<const Interval> args, std::span<Interval> out,
+                                                std::span<std::uint8_t> err) const {
+  inclusion(args, out, err);
+  return args[0].is_empty() || jump_free(jumps_, args[0].lo(), args[0].hi());
+}
+
+std::string RationalDerivativeOp::name() const {
+  return curve_->name() + "-derivative-" + std::to_string(order_);
+}
+
+void RationalDerivativeOp::eval(std::span<const double> args, std::span<double> out) const {
+  const int d = curve_->dim();
+  const double t = args[0];
+  if (!(t >= curve_->lo() && t <= curve_->hi())) {
+    std::fill(out.begin(), out.end(), kNaN);
+    return;
+  }
+  // c[j][.] = c^(j); hv[i][.] = H^(i) (zero past the degree).
+  double c[kMaxOrderTerms][BSplineOp::kMaxDim], hv[kMaxOrderTerms][BSplineOp::kMaxDim + 1];
+  curve_->eval(args, std::span<double>(c[0], static_cast<std::size_t>(d)));
+  for (int i = 1; i <= order_; ++i) {
+    if (i < static_cast<int>(h_.size()))
+      h_[static_cast<std::size_t>(i)]->eval(args, std::span<double>(hv[i], static_cast<std::size_t>(d + 1)));
+    else
+      std::fill_n(hv[i], d + 1, 0.0);
+  }
+  double h0[BSplineOp::kMaxDim + 1];
+  h_[0]->eval(args, std::span<double>(h0, static_cast<std::size_t>(d + 1)));
+  const double w = h0[d];
+  for (int j = 1; j <= order_; ++j)
+    for (int e = 0; e < d; ++e) {
+      // (j w') c^(j-1) first: at order 1 the quotient rule's (A' - w' c) / w, bit for bit.
+      double num = hv[j][e] - j * hv[1][d] * c[j - 1][e];
+      for (int i = 2; i <= j; ++i) num -= binomial(j, i) * hv[i][d] * c[j - i][e];
+      c[j][e] = num / w;
+    }
+  for (int e = 0; e < d; ++e) out[static_cast<std::size_t>(e)] = c[order_][e];
+}
+
+void RationalDerivativeOp::inclusion(std::span<const Interval> args, std::span<Interval> out,
+                                     std::span<std::uint8_t> err) const {
+  const Interval t = args[0];
+  if (t.is_empty()) {
+    std::fill(out.begin(), out.end(), Interval::empty());
+    return;
+  }
+  const BSplineOp& c = *curve_;
+  const double a = std::max(t.lo(), c.lo()), b = std::min(t.hi(), c.hi());
+  if (a > b) {
+    std::fill(out.begin(), out.end(), Interval::empty());
+    for (auto& e : err) e |= kCertainError;
+    return;
+  }
+  if (t.lo() < c.lo() || t.hi() > c.hi())
+    for (auto& e : err) e |= kMaybeError;
+  const int d = c.dim();
+  const std::vector<double>& knots = c.knots();
+  Interval result[BSplineOp::kMaxDim], piece[BSplineOp::kMaxDim];
+  bool first = true;
+  for (int k = c.span(a); k <= c.span(b); ++k) {
+    const std::size_t ku = static_cast<std::size_t>(k);
+    if (!(knots[ku] < knots[ku + 1])) continue;  // empty span: never evaluated
+    enclose_span(k, std::max(a, knots[ku]), std::min(b, knots[ku + 1]), piece);
+    for (int q = 0; q < d; ++q) result[q] = first ? piece[q] : hull(result[q], piece[q]);
+    first = false;
+  }
+  for (int q = 0; q < d; ++q) out[static_cast<std::size_t>(q)] = result[q];
+}
+
+void RationalDerivativeOp::enclose_span(int k, double s, double e, Interval* out) const {
+  const BSplineOp& c = *curve_;
+  const int d = c.dim();
+  // c and H^(i), all on span k (H^(i)'s knot vector drops i knots at each end, so this span
+  // is its span k - i).
+  Interval cj[kMaxOrderTerms][BSplineOp::kMaxDim], hj[kMaxOrderTerms][BSplineOp::kMaxDim + 1];
+  auto enclose = [&](const BSplineOp& op, int span, Interval* into) {
+    double lo[BSplineOp::kMaxDim + 1], hi[BSplineOp::kMaxDim + 1];
+    std::fill_n(lo, op.dim(), std::numeric_limits<double>::infinity());
+    std::fill_n(hi, op.dim(), -std::numeric_limits<double>::infinity());
+    op.enclose_piece(span, s, e, lo, hi);
+    for (int q = 0; q < op.dim(); ++q) into[q] = Interval(lo[q], hi[q]);
+  };
+  enclose(c, k, cj[0]);
+  for (int i = 0; i <= order_; ++i) {
+    if (i < static_cast<int>(h_.size()))
+      enclose(*h_[static_cast<std::size_t>(i)], k - i, hj[i]);
+    else
+      std::fill_n(hj[i], d + 1, Interval(0.0));
+  }
+  const Interval w = hj[0][d];  // weights are positive: w > 0 on the span
+  for (int j = 1; j <= order_; ++j)
+    for (int q = 0; q < d; ++q) {
+      Interval num = hj[j][q];
+      for (int i = 1; i <= j; ++i) num -= Interval(binomial(j, i)) * hj[i][d] * cj[j - i][q];
+      cj[j][q] = num / w;
+    }
+  for (int q = 0; q < d; ++q) out[q] = cj[order_][q];
+}
+
+Fn RationalDerivativeOp::derivative(std::span<const Fn> args, int) const {
+  return genmod::apply_custom(std::shared_ptr<const CustomOp>(next()), args);
+}
+
+std::shared_ptr<const RationalDerivativeOp> RationalDerivativeOp::next() const {
+  std::call_once(next_once_, [this] {
+    std::vector<std::shared_ptr<const BSplineOp>> h = h_;
+    if (order_ + 1 <= curve_->degree()) {
+      h.push_back(h.back()->derivative_op());
+    }
+    next_ = std::shared_ptr<const RationalDerivativeOp>(new RationalDerivativeOp(curve_, std::move(h), order_ + 1));
+  });
+  return next_;
 }
 
 }  // namespace genmod::detail

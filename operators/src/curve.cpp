@@ -1,6 +1,7 @@
 #include "genmod/operators/curve.hpp"
 
 #include "bspline_op.hpp"
+#include "unit_tangent_op.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -150,6 +151,12 @@ Curve::Points Curve::control_points() const {
 Fn Curve::operator()(const Fn& t) const {
   if (t.dim() != 1) bad(op_->name().c_str(), "the parameter has dimension " + std::to_string(t.dim()) + ", expected 1");
   return genmod::apply_custom(std::shared_ptr<const CustomOp>(op_), {t});
+}
+
+Fn Curve::unit_tangent(const Fn& t) const {
+  if (t.dim() != 1) bad(op_->name().c_str(), "the parameter has dimension " + std::to_string(t.dim()) + ", expected 1");
+  if (op_->degree() < 1) bad(op_->name().c_str(), "a curve of degree 0 has no tangent");
+  return genmod::apply_custom(std::shared_ptr<const CustomOp>(op_->unit_tangent_op()), {t});
 }
 
 std::shared_ptr<const CustomOp> Curve::op() const { return op_; }

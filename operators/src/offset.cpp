@@ -1,6 +1,7 @@
 #include "genmod/operators/offset.hpp"
 
 #include "dims.hpp"
+#include "genmod/operators/curve.hpp"
 #include "genmod/operators/higher_order.hpp"
 #include "genmod/operators/vector.hpp"
 
@@ -55,6 +56,16 @@ Fn offset_product(const Fn& cross, const Fn& profile, int cross_parm) {
   require_parm("offset_product", cross, cross_parm);
   const Fn n = unit_normal(cross, cross_parm);
   return cat({cross[0] + profile[0] * n[0], cross[1] + profile[0] * n[1], profile[1]});
+}
+
+Fn offset_product(const Curve& cross, const Fn& u, const Fn& profile) {
+  if (cross.dimension() != 2)
+    detail::dimension_error("offset_product", "the cross section has dimension " + std::to_string(cross.dimension()) +
+                                                  ", expected 2");
+  require_dim("offset_product", "the parameter", u, 1);
+  require_dim("offset_product", "the profile", profile, 2);
+  const Fn c = cross(u), t = cross.unit_tangent(u);
+  return cat({c[0] - profile[0] * t[1], c[1] + profile[0] * t[0], profile[1]});
 }
 
 Fn closed_offset(const Fn& curve, const Fn& r, int parm) {

@@ -135,6 +135,84 @@ TEST(Curve, DerivativesAreExactSplines) {
   check_operator_properties(arc(square(x(0))), curve_spec(arc), 36);
 }
 
+// A line, a quarter circle and a line joined by double knots, as the gallery's cross
+// sections are: tangent-continuous in space, only C^0 in the parameter (the speed jumps at
+// the knots 0.3 and 0.6: 1 / 0.3 along the first line, about 5.2 on the arc, 1 / 0.4 along
+// the second line).
+Curve line_arc_line() {
+  const double w = std::sqrt(0.5);
+  return Curve::nurbs({{0, 0}, {0.5, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 1.5}, {2, 2}}, {1, 1, 1, w, 1, 1, 1}, 2,
+                      {0, 0, 0, 0.3, 0.3, 0.6, 0.6, 1, 1, 1});
+}
+
+// The worst excess of the enclosure of f over [k - h, k + h] beyond the range of 400 samples
+// (which it must contain).
+double excess_at(const Fn& f, double k, double h) {
+  const Tape tape(f);
+  IntervalEvaluator iv;
+  PointEvaluator pv;
+  const auto y = iv.eval(tape, {Interval(k - h, k + h)});
+  const std::vector<Interval> box(y.begin(), y.end());
+  double worst = 0.0;
+  for (std::size_t j = 0; j < box.size(); ++j) {
+    double lo = 1e300, hi = -1e300;
+    for (int i = 0; i <= 400; ++i) {
+      const double v = pv.eval(tape, {k - h + 2 * h * i / 400})[j];
+      lo = std::min(lo, v), hi = std::max(hi, v);
+    }
+    EXPECT_TRUE(box[j].contains(lo) && box[j].contains(hi)) << "knot " << k << " h " << h;
+    worst = std::max(worst, box[j].width() - (hi - lo));
+  }
+  return worst;
+}
+
+// NURBS derivatives of any order are enclosed span by span: over a box that straddles a
+// double knot each span's formula gets its own A', w' and c. (The quotient rule as kernel
+// nodes, each enclosed on its own, paired the line's A' with the arc's w': an enclosure as
+// wide as the jump that never shrank, about [-3.8, 16] x [-7.2, 7.2] around a tangent
+// (5.8, 0) of the gallery plate's cross section.) Containment, derivatives (the second and
+// third against differences) and batch = scalar hold; the excess over the true range shrinks
+// with the box at the knots; c' is continuous on a box inside a span, not across a double
+// knot.
+TEST(Curve, RationalDerivativesAreEnclosedSpanBySpan) {
+  const Curve c = line_arc_line();
+  const Fn d1 = derivative(c(x(0)), 0), d2 = derivative(d1, 0);
+  check_operator_properties(d1, curve_spec(c), 38);
+  check_operator_properties(d2, curve_spec(c), 39);
+  for (double k : {0.3, 0.6})
+    for (double h : {1e-3, 1e-5, 1e-7}) EXPECT_LT(excess_at(d1, k, h), 200.0 * h) << "knot " << k << " h " << h;
+  IntervalEvaluator iv;
+  const Tape tape(d1);
+  iv.eval(tape, {Interval(0.35, 0.4)});
+  EXPECT_TRUE(iv.continuous());
+  iv.eval(tape, {Interval(0.25, 0.35)});
+  EXPECT_FALSE(iv.continuous());
+  iv.eval(tape, {Interval(0.3, 0.35)});  // a value at the knot comes from the span starting there
+  EXPECT_TRUE(iv.continuous());
+  iv.eval(tape, {Interval(0.25, 0.3)});
+  EXPECT_FALSE(iv.continuous());
+  // The curve itself (double knots in degree 2) is continuous everywhere.
+  iv.eval(Tape(c(x(0))), {Interval(0.25, 0.35)});
+  EXPECT_TRUE(iv.continuous());
+}
+
+// The unit tangent is enclosed span by span too: at a knot where only the speed jumps its
+// enclosure shrinks with the box, where normalize(c') stays wide (the hull of two speeds
+// divided by itself). Polynomial curves (a Catmull-Rom spline, triple knots) as well.
+TEST(Curve, UnitTangentIsTightAcrossTangentContinuousKnots) {
+  const Curve c = line_arc_line();
+  const Fn t = c.unit_tangent(x(0));
+  check_operator_properties(t, curve_spec(c), 40);
+  for (double k : {0.3, 0.6})
+    for (double h : {1e-3, 1e-5, 1e-7}) EXPECT_LT(excess_at(t, k, h), 50.0 * h) << "knot " << k << " h " << h;
+  EXPECT_GT(excess_at(normalize(derivative(c(x(0)), 0)), 0.3, 1e-7), 0.1);
+  const Fn n = length(t);
+  for (double u = 0.0; u <= 1.0; u += 0.01) EXPECT_NEAR(evaluate(n, std::vector<double>{u})[0], 1.0, 1e-15);
+  const Curve cr = Curve::catmull_rom({{0, 0}, {1, 1}, {2, 0}, {3, 1}});
+  check_operator_properties(cr.unit_tangent(x(0)), curve_spec(cr), 41);
+  EXPECT_THROW(Curve::polyline({{0, 0}, {1, 1}}).unit_tangent(cat({x(0), x(1)})), std::invalid_argument);
+}
+
 TEST(Curve, EnclosureTightensQuadraticallyOnSubSpans) {
   std::mt19937_64 rng(37);
   const Curve c = Curve::uniform_bspline(random_points(rng, 8, 1), 3);

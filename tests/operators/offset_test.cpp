@@ -2,7 +2,9 @@
 // circle of radius 0.75, erratum E5), offset product distances, closed offsets with end caps,
 // the two-point arc with a sagitta (including its straight-chord limit), the shared properties
 // and dimension errors.
+#include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/operators/curve.hpp"
 #include "genmod/operators/offset.hpp"
 #include "genmod/operators/vector.hpp"
 #include "operators/operator_properties.hpp"
@@ -109,6 +111,41 @@ TEST(Offset, ProductOffsetsTheCrossSectionByTheProfile) {  // section 7.14 invar
       EXPECT_GE(square_sum(p[0] / 0.8, p[1] / 0.5), 1.0 - 1e-15);
     }
   check_operator_properties(s, unit_domain(2), 303);
+}
+
+// The Curve form of the offset product is the same surface as the Fn form, and over boxes
+// that straddle a double knot of a tangent-continuous section (a rounded rectangle: lines and
+// quarter circles) its enclosures shrink with the box, where the Fn form's normal
+// normalize(normal2d(c)) stays as wide as the jump of the speed.
+TEST(Offset, ProductOfACurveIsBoundedAcrossItsKnots) {
+  const double w = std::sqrt(0.5);
+  // The quarter of a rounded square from the middle of its bottom side to the middle of its
+  // right side: line, corner (radius 0.5), line; double knots at 0.3 and 0.7.
+  const Curve corner = Curve::nurbs({{0, -1}, {0.25, -1}, {0.5, -1}, {1, -1}, {1, -0.5}, {1, -0.25}, {1, 0}},
+                                    {1, 1, 1, w, 1, 1, 1}, 2, {0, 0, 0, 0.3, 0.3, 0.7, 0.7, 1, 1, 1});
+  const Fn profile = cat({0.1 * v, v});
+  const Fn by_curve = offset_product(corner, u, profile), by_fn = offset_product(corner(u), profile);
+  for (double a : {0.0, 0.1, 0.3, 0.45, 0.7, 0.9, 1.0})
+    for (double b : {0.0, 0.5, 1.0}) {
+      const auto p = at(by_curve, {a, b}), q = at(by_fn, {a, b});
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k], q[k], 1e-15) << a << ", " << b;
+    }
+  // On the top edge (d1 = 0.1) across the first knot: the Curve form's width shrinks with
+  // the box; the Fn form's stays about 0.1 times the spread of its normal (the speeds 5/3 on
+  // the line and about 1.6 .. 2.3 on the arc make normalize(c') wide even though c' no longer
+  // encloses 0).
+  IntervalEvaluator iv;
+  const Tape curve_tape(by_curve), fn_tape(by_fn);
+  for (double h : {1e-3, 1e-6}) {
+    const std::vector<Interval> box{Interval(0.3 - h, 0.3 + h), Interval(1.0)};
+    const auto s = iv.eval(curve_tape, box);
+    for (int k = 0; k < 2; ++k) EXPECT_LT(s[k].width(), 50.0 * h) << h;
+  }
+  const auto wide = iv.eval(fn_tape, {Interval(0.3 - 1e-6, 0.3 + 1e-6), Interval(1.0)});
+  EXPECT_GT(wide[1].width(), 1e-3);
+  check_operator_properties(by_curve, unit_domain(2), 304);
+  testing::expect_throw_naming([&] { offset_product(Curve::polyline({{0, 0, 0}, {1, 1, 1}}), u, profile); },
+                               "offset_product");
 }
 
 TEST(Offset, ClosedOffsetOfASegmentIsAStadium) {

@@ -205,6 +205,63 @@ TEST(AdaptiveMesh, UnflaggedCylinderSeamIsFoundByGeometry) {
   EXPECT_EQ(v.misoriented_edges, 0u);
 }
 
+// A cap filling a wall's rim in pieces is glued to the rim's parts even where mapping a part's
+// parameters onto the rim's grid moves them by more than the gluing tolerance (1e-9 of the
+// extent): the rim of a flat three-lobed cylinder is fast (its length, about 11, against an
+// extent of about 2.6), and one grid step of its parameter is up to 1e-8 of length. Each end
+// is closed by two half fans from the centre starting at an angle off the grid, one of them
+// running through the wall's seam. Checking the part at its rounded parameters refused all
+// four rims here (their seam deviation is 3.5e-9); every edge must be glued and the mesh valid.
+TEST(AdaptiveMesh, CapPiecesAreGluedToAFastRim) {
+  const double h = 0.05, phase = 0.3141592;  // the half fans start at 2 pi phase
+  auto rim = [](const Fn& t) {
+    const Fn r = 1.0 + 0.3 * cos(6 * kPi * t);
+    return cat({r * cos(2 * kPi * t), r * sin(2 * kPi * t)});
+  };
+  const Fn wall = rim(U);
+  std::vector<SurfacePatch> patches{{cat({wall[0], wall[1], h * V}), Interval(0, 1), Interval(0, 1), true}};
+  for (double z : {0.0, h})
+    for (double half : {0.0, 0.5}) {
+      const Fn e = rim(phase + half + 0.5 * U);  // orientation is the mesher's to make outward
+      patches.push_back({cat({V * e[0], V * e[1], Fn(z)}), Interval(0, 1), Interval(0, 1)});
+    }
+  const AdaptiveMesh m = mesh_adaptive(patches, {.tolerance = 5e-3});
+  EXPECT_EQ(m.glued_edges, 4u + 4u * 3u);  // the wall's seam and rims; each half fan's rim and radii
+  EXPECT_EQ(m.collapsed_edges, 4u);         // the half fans' centres
+  EXPECT_TRUE(m.closed());
+  EXPECT_LT(m.seam_deviation, 1e-7);
+  const MeshValidity v = validate(m.mesh);
+  EXPECT_TRUE(v.valid()) << describe(v);
+  EXPECT_EQ(v.euler_characteristic, 2);
+  // h times the area inside the rim, pi (1 + 0.3^2 / 2).
+  EXPECT_NEAR(v.volume, h * kPi * 1.045, 1e-2 * h * kPi * 1.045);
+}
+
+// Leaves at a pole whose edges carry their neighbours' corners: a cone over a disc, both in
+// polar coordinates with the pole at v = 1 (straight rays into the apex and the centre), one
+// sector refined along v near the pole, so the leaves beside it have many points on one ray.
+// Joining the pole to two points of one ray gives a flat triangle and folds over its
+// neighbours (the old zipper made 30 such and 66 intersecting pairs here); the mesh must be
+// valid.
+TEST(AdaptiveMesh, PolesOfStraightRaysGiveNoFlatTriangles) {
+  const Fn a = 2 * kPi * U, r = 1.0 - V;
+  const std::vector<SurfacePatch> patches{
+      {cat({r * cos(a), r * sin(a), 0.5 * V}), Interval(0, 1), Interval(0, 1), true},  // cone, apex at v = 1
+      {cat({r * cos(a), r * sin(a), Fn(0.0)}), Interval(0, 1), Interval(0, 1), true}};  // disc, centre at v = 1
+  AdaptiveMeshOptions o{.tolerance = 0.05};
+  o.refine = [](std::size_t, const Interval& u, const Interval& v) {
+    return u.hi() <= 0.125 && v.lo() >= 0.75 && v.hi() - v.lo() > 1.0 / 512;
+  };
+  const AdaptiveMesh m = mesh_adaptive(patches, o);
+  EXPECT_EQ(m.collapsed_edges, 2u);
+  EXPECT_TRUE(m.closed());
+  const MeshValidity v = validate(m.mesh);
+  EXPECT_EQ(v.degenerate_triangles, 0u) << describe(v);
+  EXPECT_EQ(v.self_intersections, 0u) << describe(v);
+  EXPECT_TRUE(v.valid()) << describe(v);
+  EXPECT_NEAR(v.volume, kPi / 6.0, 0.05 * kPi / 6.0);  // a cone of radius 1 and height 1/2
+}
+
 TEST(AdaptiveMesh, SameMeshForAnyThreadCount) {
   const AdaptiveMesh one = mesh_adaptive({torus(1.0, 0.4)}, {.tolerance = 1e-3, .threads = 1});
   const AdaptiveMesh two = mesh_adaptive({torus(1.0, 0.4)}, {.tolerance = 1e-3, .threads = 2});

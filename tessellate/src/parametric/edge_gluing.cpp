@@ -101,14 +101,18 @@ std::optional<double> locate(const EdgeSamples& a, const Point3& p, const std::v
   return t;
 }
 
-// True when b's samples in [b_lo, b_hi] lie on a at the glue's mapped parameters.
-bool verified(const Glue& g, const EdgeSamples& a, const EdgeSamples& b, const std::vector<CompiledPatch>& compiled,
-              double eps, PointEvaluator& ev) {
+// True when b's samples at the fractions [b_from, b_to] of b lie on a at the fractions mapped
+// linearly onto [a_from, a_to]. The map is checked as found (unrounded): the glue's grid
+// rounding moves a mapped point by up to about one grid step, 2^-30 of a's parameter range,
+// which on a fast edge (a rim of length L >> extent) is more than the tolerance; that
+// rounding is the mesher's to measure (seam deviation), not a reason to refuse the glue.
+bool verified(const EdgeSamples& a, const EdgeSamples& b, double b_from, double b_to, double a_from, double a_to,
+              const std::vector<CompiledPatch>& compiled, double eps, PointEvaluator& ev) {
   for (int k = 0; k < kSamples; ++k) {
-    const std::int64_t tb = (kGridSize / (kSamples - 1)) * k;
-    if (tb < g.b_lo || tb > g.b_hi) continue;
-    const double ta = std::ldexp(static_cast<double>(g.to_a(tb)), -kGridBits);
-    if (!(distance(eval_edge(a.edge, ta, compiled, ev), b.at[k]) <= eps)) return false;
+    const double fb = static_cast<double>(k) / (kSamples - 1);
+    if (fb < b_from || fb > b_to) continue;
+    const double ta = a_from + (fb - b_from) / (b_to - b_from) * (a_to - a_from);
+    if (!(distance(eval_edge(a.edge, std::clamp(ta, 0.0, 1.0), compiled, ev), b.at[k]) <= eps)) return false;
   }
   return true;
 }
@@ -122,8 +126,8 @@ std::vector<Glue> match_part(const EdgeSamples& a, bool a_wraps, const EdgeSampl
   const std::optional<double> end = locate(a, b.at[kSamples - 1], compiled, eps, ev);
   if (!end || std::abs(*end - *start) < 1e-6) return {};
   const std::int64_t s = std::llround(*start * kGridSize), e = std::llround(*end * kGridSize);
-  Glue g{a.edge, b.edge, e < s, std::min(s, e), std::max(s, e)};
-  if (verified(g, a, b, compiled, eps, ev)) return {g};
+  if (verified(a, b, 0.0, 1.0, *start, *end, compiled, eps, ev))
+    return {Glue{a.edge, b.edge, e < s, std::min(s, e), std::max(s, e)}};
   if (!a_wraps) return {};
   // The other way round a's loop: through its seam (a at 0 = a at 1), where b is at t.
   const std::optional<double> seam = locate(b, a.at[0], compiled, eps, ev);
@@ -131,9 +135,12 @@ std::vector<Glue> match_part(const EdgeSamples& a, bool a_wraps, const EdgeSampl
   const std::int64_t t = std::llround(*seam * kGridSize);
   if (t <= 0 || t >= kGridSize) return {};
   // s > e: b runs up from s to the seam, then up from 0 to e; s < e: down to 0, down from 1.
+  const double seam_a_first = s > e ? 1.0 : 0.0;
+  if (!verified(a, b, 0.0, *seam, *start, seam_a_first, compiled, eps, ev) ||
+      !verified(a, b, *seam, 1.0, 1.0 - seam_a_first, *end, compiled, eps, ev))
+    return {};
   Glue first{a.edge, b.edge, s < e, s > e ? s : 0, s > e ? kGridSize : s, 0, t};
   Glue second{a.edge, b.edge, s < e, s > e ? 0 : e, s > e ? e : kGridSize, t, kGridSize};
-  if (!verified(first, a, b, compiled, eps, ev) || !verified(second, a, b, compiled, eps, ev)) return {};
   return {first, second};
 }
 

@@ -10,8 +10,9 @@
 //  - a remaining edge b is glued to a part of another edge a (a cap fills a wall's rim in
 //    several pieces) when b's ends lie on a's curve and b's samples agree with a's at the
 //    linearly mapped parameters.
-// Parameters mapped between edges are rounded to the grid (2^-30 of the range); the mesher
-// measures the resulting deviation.
+// A part's map is verified at the parameters found, before rounding; the glue's parameters
+// are rounded to the grid (2^-30 of the range), which on a fast edge moves a point by more
+// than the tolerance, and the mesher measures the resulting deviation.
 #pragma once
 
 #include "kd_subdivision.hpp"

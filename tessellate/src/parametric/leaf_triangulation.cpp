@@ -87,6 +87,49 @@ void zip_polygon(const std::vector<GridPoint>& poly, const GridRect& r, Emit&& e
   }
 }
 
+// A leaf with an edge on a collapsed patch edge (a pole): that edge is one surface point, so
+// a triangle joining it to two points of one of the leaf's other edges, which zip_polygon may
+// make (it is non-degenerate in (u, v)), is degenerate or folded in space wherever that
+// edge is a straight segment ending at the pole (a cone's or a disc's ray). Such a leaf is
+// triangulated in a plane where the collapsed edge is one point: leaf coordinates (a, b) in
+// [0, 1]^2, shrunk toward the middle of each collapsed edge (b = 1 collapsed: a -> 1/2 +
+// (a - 1/2)(1 - b)); the leaf's other edges stay straight there, as a ray does in space.
+// `poly` has one point left for each collapsed edge. Ear clipping with strictly convex ears
+// that hold no other point (closed test): n points give n - 2 triangles, none with three
+// points on one straight edge. Returns false (emitting nothing) if no ear is found.
+template <class Emit>
+bool clip_ears(const std::vector<std::array<double, 2>>& q, Emit&& emit) {
+  constexpr double kFlat = 1e-13;  // collinear in the plane (leaf units); true areas are >= 2^-50
+  auto area2 = [&](std::size_t a, std::size_t b, std::size_t c) {
+    return (q[b][0] - q[a][0]) * (q[c][1] - q[a][1]) - (q[b][1] - q[a][1]) * (q[c][0] - q[a][0]);
+  };
+  std::vector<std::size_t> left(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) left[i] = i;
+  std::vector<std::array<std::size_t, 3>> out;
+  while (left.size() > 3) {
+    bool clipped = false;
+    for (std::size_t k = 0; k < left.size() && !clipped; ++k) {
+      const std::size_t a = left[(k + left.size() - 1) % left.size()], b = left[k], c = left[(k + 1) % left.size()];
+      if (!(area2(a, b, c) > kFlat)) continue;
+      bool empty = true;
+      for (std::size_t m : left)
+        if (m != a && m != b && m != c && area2(a, b, m) >= -kFlat && area2(b, c, m) >= -kFlat && area2(c, a, m) >= -kFlat)
+          empty = false;
+      if (!empty) continue;
+      out.push_back({a, b, c});
+      left.erase(left.begin() + static_cast<std::ptrdiff_t>(k));
+      clipped = true;
+    }
+    if (!clipped) return false;
+  }
+  if (left.size() == 3) {
+    if (!(area2(left[0], left[1], left[2]) > kFlat)) return false;
+    out.push_back({left[0], left[1], left[2]});
+  }
+  for (const auto& t : out) emit(t[0], t[1], t[2]);
+  return true;
+}
+
 }  // namespace
 
 LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leaves, const EdgeTopology& topology) {
@@ -142,14 +185,49 @@ LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leave
   auto index = [&](const GridPoint& g) {
     return static_cast<std::uint32_t>(std::lower_bound(out.points.begin(), out.points.end(), g) - out.points.begin());
   };
+  std::vector<std::array<bool, 4>> collapsed(leaves.size(), {false, false, false, false});
+  for (const EdgeRef& e : topology.collapsed) collapsed[e.patch][static_cast<std::size_t>(e.side)] = true;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     const std::vector<GridPoint>& poly = polygons[i];
     if (poly.size() == 4) {
       out.quads.push_back({index(poly[0]), index(poly[1]), index(poly[2]), index(poly[3])});
       continue;
     }
-    zip_polygon(poly, rects[i], [&](std::size_t a, std::size_t b, std::size_t c) {
-      out.triangles.push_back({index(poly[a]), index(poly[b]), index(poly[c])});
+    const GridRect& r = rects[i];
+    const std::array<bool, 4>& c = collapsed[poly[0].patch];
+    const std::array<bool, 4> pole{c[0] && r.v0 == 0, c[1] && r.u1 == kGridSize, c[2] && r.v1 == kGridSize,
+                                   c[3] && r.u0 == 0};
+    if ((pole[0] || pole[1] || pole[2] || pole[3]) && !(pole[0] && pole[2]) && !(pole[1] && pole[3])) {
+      // One point per collapsed edge, in the plane described at clip_ears.
+      std::vector<std::size_t> kept;
+      std::vector<std::array<double, 2>> plane;
+      std::array<bool, 4> seen{false, false, false, false};
+      for (std::size_t k = 0; k < poly.size(); ++k) {
+        const GridPoint& g = poly[k];
+        const std::array<bool, 4> on{g.v == r.v0, g.u == r.u1, g.v == r.v1, g.u == r.u0};
+        int side = -1;
+        for (int s = 0; s < 4; ++s)
+          if (pole[static_cast<std::size_t>(s)] && on[static_cast<std::size_t>(s)]) side = s;
+        if (side >= 0 && seen[static_cast<std::size_t>(side)]) continue;
+        if (side >= 0) seen[static_cast<std::size_t>(side)] = true;
+        double a = static_cast<double>(g.u - r.u0) / static_cast<double>(r.u1 - r.u0);
+        double b = static_cast<double>(g.v - r.v0) / static_cast<double>(r.v1 - r.v0);
+        if (pole[0]) a = 0.5 + (a - 0.5) * b;
+        if (pole[2]) a = 0.5 + (a - 0.5) * (1.0 - b);
+        if (pole[1]) b = 0.5 + (b - 0.5) * (1.0 - a);
+        if (pole[3]) b = 0.5 + (b - 0.5) * a;
+        kept.push_back(k);
+        plane.push_back({a, b});
+      }
+      // (The first and last polygon points may both lie on one collapsed edge: the left edge
+      // runs into the lower-left corner, where the bottom edge starts.)
+      if (kept.size() >= 3 && clip_ears(plane, [&](std::size_t a, std::size_t b, std::size_t d) {
+            out.triangles.push_back({index(poly[kept[a]]), index(poly[kept[b]]), index(poly[kept[d]])});
+          }))
+        continue;
+    }
+    zip_polygon(poly, r, [&](std::size_t a, std::size_t b, std::size_t c2) {
+      out.triangles.push_back({index(poly[a]), index(poly[b]), index(poly[c2])});
     });
   }
 

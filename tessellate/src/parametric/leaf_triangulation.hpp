@@ -6,7 +6,10 @@
 // corners is a quad (split later along its shorter diagonal in space); any other polygon of
 // n points is cut into n - 2 triangles without an extra point (a zipper between its two
 // chains, never a triangle of points on one edge), which keeps every triangle non-degenerate
-// in parameter space and makes every interior edge shared by exactly two triangles.
+// in parameter space and makes every interior edge shared by exactly two triangles. A leaf on
+// a collapsed patch edge (a pole) keeps one point of that edge and is cut by ear clipping in
+// a plane where that edge is a point, so no triangle joins the pole to two points of one of
+// its other edges (flat in space where that edge is a straight ray).
 #pragma once
 
 #include "edge_gluing.hpp"

@@ -168,8 +168,9 @@ Curve offsets_curve(const ParameterValues& p);
 // The plate's closed cross section and its (inward offset d1, height d2) edge profile.
 Curve offset_plate_cross(const ParameterValues& p);
 Curve offset_plate_profile(const ParameterValues& p);
-// The plate's top (z = thickness / 2, normal +z) and bottom (normal -z) faces: Coons patches
-// bounded by the sides' top and bottom edges (the model's extra patches).
+// The plate's top (z = thickness / 2, normal +z) and bottom (normal -z) faces: fans from the
+// centre to the sides' top and bottom edges, periodic in the sides' u, which they share (the
+// model's extra patches).
 std::vector<ModelPatch> offset_plate_faces(const ParameterValues& p);
 // The spoon's mid-surface (shape_x(v), arc(u, v) + (0, bend_y(v))) before thickening, and
 // its half thickness thick_y(v) (functions of (u, v) = (x(0), x(1))).

@@ -72,6 +72,12 @@ class Curve {
 
   // The curve evaluated at the scalar function t (GENMOD's m_crv(file, t)).
   Fn operator()(const Fn& t) const;
+  // The unit tangent c'(t) / |c'(t)| at the scalar function t (c' with respect to the curve's
+  // own parameter; an error where c' = 0). Unlike normalize(derivative(c(t))), its enclosure
+  // over a box that straddles a knot where the curve is tangent-continuous but its speed
+  // jumps (lines and arcs joined by double knots) shrinks with the box: each knot span is
+  // normalized on its own. Degree >= 1 (throws std::invalid_argument otherwise).
+  Fn unit_tangent(const Fn& t) const;
   // The custom operator (one argument, dimension() outputs).
   std::shared_ptr<const CustomOp> op() const;
 

@@ -23,6 +23,8 @@
 
 namespace genmod {
 
+class Curve;  // genmod/operators/curve.hpp
+
 // GENMOD's m_normal2d: (-c1', c0') with ' = d/dx(parm); unnormalized. `curve` has dimension 2.
 Fn normal2d(const Fn& curve, int parm = 0);
 
@@ -33,6 +35,14 @@ Fn offset_curve(const Fn& curve, const Fn& r, int parm = 0);
 // section c offset by d1 and lifted to height d2 (a 3D surface). n is the normal of the cross
 // section with respect to x(cross_parm); the profile has dimension 2.
 Fn offset_product(const Fn& cross, const Fn& profile, int cross_parm = 0);
+
+// The same surface for a cross section given as a planar Curve evaluated at the scalar u:
+// (c(u) + d1 n, d2) with n the left normal of Curve::unit_tangent(u) (the direction of the
+// curve's own parameter; for an increasing u, the n of the form above). The normal's
+// enclosure stays tight over boxes that straddle knots where the section is
+// tangent-continuous but not C^1 in its parameter (lines and arcs joined by double knots),
+// where normalize(normal2d(c)) has wide or unbounded enclosures.
+Fn offset_product(const Curve& cross, const Fn& u, const Fn& profile);
 
 // GENMOD's m_closed_offset (section 7.15): the boundary of the points within distance r of the
 // open planar curve c (c a function of x(parm) on [0, 1]), as a closed curve of x(parm) in
