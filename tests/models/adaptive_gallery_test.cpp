@@ -22,8 +22,8 @@ namespace {
 // the offset's enclosure is unbounded in places (offset_plate, whose caps then cannot be
 // glued to unrefined walls), hairs that enter the scalp (furry_bear: several closed
 // surfaces that overlap need CSG), and operators whose interval enclosures are too slow or
-// loose for refinement in a test's time (spoon, cross_section_matching).
-const std::set<std::string> kKnownDefects{"offset_plate", "furry_bear", "spoon", "cross_section_matching"};
+// loose for refinement in a test's time (cross_section_matching).
+const std::set<std::string> kKnownDefects{"offset_plate", "furry_bear", "cross_section_matching"};
 
 class AdaptiveGallery : public ::testing::TestWithParam<std::string> {};
 
