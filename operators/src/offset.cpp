@@ -5,6 +5,7 @@
 #include "genmod/operators/higher_order.hpp"
 #include "genmod/operators/vector.hpp"
 
+#include <array>
 #include <numbers>
 #include <string>
 
@@ -23,15 +24,28 @@ void require_parm(const char* op, const Fn& curve, int parm) {
 // The unit left normal of a planar curve.
 Fn unit_normal(const Fn& curve, int parm) { return normalize(normal2d(curve, parm)); }
 
-// sin(z) / z without a removable singularity: a Taylor polynomial for |z| < 0.1 (its first
-// omitted term, z^10 / 11!, is below 3e-18 there) and the quotient elsewhere. The quotient's
-// argument is max(|z|, 0.1) (sinc is even), so no evaluation and no inclusion ever divides by
-// an interval containing 0, even over boxes where the select is undecided.
+// sin(z) / z without a removable singularity, in a form whose natural interval extension and
+// derivatives stay tight. For |z| < 3 it is the Taylor polynomial through z^26 in Horner form
+// in z^2 (the first omitted term, z^28 / 29!, is below 3e-18 there): a polynomial's interval
+// extension and symbolic derivatives are again polynomials, while the quotient sin(z) / z and
+// its derivative (z cos z - sin z) / z^2 cancel catastrophically for small z, so that their
+// enclosures over a box of width w grow like w / z^2 (an arc's tangent enclosure then
+// straddled 0 and its unit normal had none). The arc below (t in [0, 1]) calls it with arguments
+// no larger than its half turning angle, so the quotient serves only nearly full circles (beyond 3
+// radians), where it is well conditioned; its argument is max(|z|, 3) (sinc is even), so no
+// evaluation and no inclusion divides by an interval containing 0, even over boxes where the
+// select is undecided.
 Fn sinc(const Fn& z) {
+  constexpr int kTerms = 14;  // the coefficients (-1)^k / (2k + 1)!, k = 0 .. 13
   const Fn z2 = square(z);
-  const Fn series = 1.0 + z2 * (-1.0 / 6 + z2 * (1.0 / 120 + z2 * (-1.0 / 5040 + z2 * (1.0 / 362880))));
-  const Fn safe = max(abs(z), 0.1);
-  return select(abs(z) < 0.1, series, sin(safe) / safe);
+  std::array<double, kTerms> c{};
+  c[0] = 1.0;
+  for (int k = 1; k < kTerms; ++k) c[k] = -c[k - 1] / ((2.0 * k) * (2.0 * k + 1.0));
+  Fn series(c[kTerms - 1]);
+  for (int k = kTerms - 2; k >= 0; --k) series = c[k] + z2 * series;
+  constexpr double kSwitch = 3.0;
+  const Fn safe = max(abs(z), kSwitch);
+  return select(abs(z) < kSwitch, series, sin(safe) / safe);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // and dimension errors.
 #include "genmod/kernel/interval_evaluator.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
+#include "genmod/kernel/tape.hpp"
 #include "genmod/operators/curve.hpp"
 #include "genmod/operators/offset.hpp"
 #include "genmod/operators/vector.hpp"
@@ -11,10 +12,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace genmod {
 namespace {
@@ -259,7 +263,7 @@ TEST(Arc, ZeroHeightIsTheChordWithSmoothDerivatives) {
     const auto s = at(dt, {t, 0.0});
     EXPECT_NEAR(s[0], 2.0, 1e-14);
     EXPECT_NEAR(s[1], 0.0, 1e-14);
-    // Both sides of h = 0 agree with the limit (no jump at the series / quotient switch).
+    // Both signs of h give mirror images (and small h the chord's limit, smoothly).
     for (double eps : {1e-3, 0.02, 0.0499, 0.0501, 0.2}) {
       const auto lo = at(a, {t, -eps}), hi = at(a, {t, eps});
       EXPECT_NEAR(lo[1], -hi[1], 1e-15);
@@ -276,6 +280,95 @@ TEST(Arc, ZeroHeightIsTheChordWithSmoothDerivatives) {
   testing::PropertySpec spec2 = unit_domain(2);
   spec2.domain[1] = Interval(0.2, 1.0);
   check_operator_properties(b, spec2, 307);
+}
+
+// The arc's enclosures stay tight where its turning angle is small: over every cell of a
+// 64 x 64 grid of (t, height) boxes around height 0 the unit normal (the tangent normalized,
+// so a tangent enclosure straddling 0 makes it unbounded) has a finite enclosure of width
+// below 0.2 (about twice the normal's true turn over a cell). The quotient form of sin(z)/z
+// used to give 104 unbounded cells here (its derivative cancels for small z) and widths up
+// to 4.5e3.
+TEST(Arc, UnitNormalEnclosureIsTightNearZeroHeight) {
+  const Fn a = arc_2pt_height(cat({-1.0, 0.0}), cat({1.0, 0.0}), v, u);
+  const Tape tape(normalize(normal2d(a, 0)), std::vector<int>{0, 1});
+  IntervalEvaluator ev;
+  constexpr int kCells = 64;
+  double widest = 0.0;
+  for (int i = 0; i < kCells; ++i)
+    for (int j = 0; j < kCells; ++j) {
+      const Interval t(double(i) / kCells, double(i + 1) / kCells);
+      const Interval h(-0.5 + double(j) / kCells, -0.5 + double(j + 1) / kCells);
+      const auto n = ev.eval(tape, {t, h});
+      for (const Interval& c : n) {
+        ASSERT_TRUE(c.is_bounded()) << "t " << t << " height " << h;
+        widest = std::max(widest, c.width());
+      }
+    }
+  EXPECT_LT(widest, 0.2);
+}
+
+// Containment by dense sampling, for the arc and its first and second derivatives in t and
+// its derivative in the height, over random boxes: small and large boxes around height 0
+// (the straight chord), and boxes around the switch of sin(z)/z from its series to the
+// quotient (a half turning angle of 3 radians: height = tan(1.5) for the half chord 1).
+TEST(Arc, EnclosuresContainDenseSamplesNearZeroHeightAndTheSwitch) {
+  const Fn a = arc_2pt_height(cat({-1.0, 0.0}), cat({1.0, 0.0}), v, u);
+  const Fn at1 = derivative(a, 0), at2 = derivative(at1, 0), ah = derivative(a, 1);
+  const Fn all = cat({a, at1, at2, ah});
+  const std::vector<int> uv{0, 1};
+  const Tape tape(all, uv);
+  IntervalEvaluator iv;
+  PointEvaluator pv;
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double h_switch = std::tan(1.5);
+  int boxes = 0;
+  for (const double centre : {0.0, 1e-9, -3e-4, 0.05, h_switch, -h_switch})
+    for (int k = 0; k < 60; ++k) {
+      const double hw = std::pow(10.0, -8.0 + 7.5 * unit(rng)) * std::max(1.0, std::abs(centre));
+      const double h0 = centre + hw * (2.0 * unit(rng) - 1.0);
+      const double tw = std::pow(10.0, -6.0 + 6.0 * unit(rng));
+      const double t0 = unit(rng) * (1.0 - tw);
+      const Interval t(t0, t0 + tw), h(h0 - hw, h0 + hw);
+      const auto enc = iv.eval(tape, {t, h});
+      const std::vector<Interval> box(enc.begin(), enc.end());
+      // Bounded near the chord (a wide box near a full circle may enclose sinc(alpha) = 0).
+      if (std::abs(centre) < 1.0)
+        for (const Interval& b : box) ASSERT_TRUE(b.is_bounded()) << "t " << t << " height " << h;
+      for (int i = 0; i <= 12; ++i)
+        for (int j = 0; j <= 12; ++j) {
+          const double tp = t.lo() + (t.hi() - t.lo()) * i / 12.0, hp = h.lo() + (h.hi() - h.lo()) * j / 12.0;
+          const auto y = pv.eval(tape, {tp, hp});
+          for (std::size_t c = 0; c < y.size(); ++c)
+            ASSERT_TRUE(box[c].contains(y[c]))
+                << "output " << c << " = " << y[c] << " outside " << box[c] << " at t " << tp << ", height " << hp;
+        }
+      ++boxes;
+    }
+  EXPECT_EQ(boxes, 360);
+}
+
+// No jump where sin(z)/z switches from the series to the quotient (half turning angle 3).
+TEST(Arc, ContinuousAcrossTheSeriesSwitch) {
+  const Fn a = arc_2pt_height(cat({-1.0, 0.0}), cat({1.0, 0.0}), v, u);
+  const Fn at1 = derivative(a, 0);
+  const double h = std::tan(1.5);
+  for (double t : {0.0, 0.3, 0.5, 0.9}) {
+    const auto lo = evaluate(a, {t, h * (1 - 1e-12)}), hi = evaluate(a, {t, h * (1 + 1e-12)});
+    const auto dlo = evaluate(at1, {t, h * (1 - 1e-12)}), dhi = evaluate(at1, {t, h * (1 + 1e-12)});
+    for (int j = 0; j < 2; ++j) {
+      EXPECT_NEAR(lo[j], hi[j], 1e-10) << t;
+      EXPECT_NEAR(dlo[j], dhi[j], 1e-9) << t;
+    }
+  }
+  // The arc stays on its circle there: radius (1 + h^2) / (2h), centre (0, h - R).
+  const double R = (1 + h * h) / (2 * h);
+  for (double hh : {h * (1 - 1e-12), h * (1 + 1e-12)})
+    for (double t : {0.1, 0.5, 0.8}) {
+      const auto p = evaluate(a, {t, hh});
+      // sinc(alpha) is about 0.047 here: its quotients amplify rounding errors.
+      EXPECT_NEAR(std::hypot(p[0], p[1] - (h - R)), R, 1e-11 * R) << t;
+    }
 }
 
 TEST(Offset, BadInputNamesTheOperator) {

@@ -260,6 +260,30 @@ TEST(AdaptiveMesh, PolesOfStraightRaysGiveNoFlatTriangles) {
   EXPECT_EQ(v.self_intersections, 0u) << describe(v);
   EXPECT_TRUE(v.valid()) << describe(v);
   EXPECT_NEAR(v.volume, kPi / 6.0, 0.05 * kPi / 6.0);  // a cone of radius 1 and height 1/2
+
+// A tube periodic in u closed at each end by two half discs: one half disc's rim is the
+// tube's rim for u in [0, 1/2], the other's for u in [1/2, 1]; both touch the tube's seam
+// (u = 1 is u = 0). The first starts at angle 2 pi, the tube's point at u = 1 bit for bit
+// (sin(2 pi) is not 0), so its start is found at the seam's other end and must be taken as
+// u = 0 there. The half discs' straight edges are glued to each other and their centres
+// collapse to a point.
+TEST(AdaptiveMesh, CapPiecesEndingOnAPeriodicSeamAreGlued) {
+  const Fn a = 2 * kPi * U;
+  std::vector<SurfacePatch> patches{{cat({cos(a), sin(a), V}), Interval(0, 1), Interval(0, 1), true}};
+  for (double z : {0.0, 1.0})
+    for (double first : {1.0, 0.5}) {
+      // Radius V, angle from first to first + 1/2 of the loop (the rim at V = 1).
+      const Fn angle = 2 * kPi * (first + 0.5 * U);
+      patches.push_back({cat({V * cos(angle), V * sin(angle), Fn(z)}), Interval(0, 1), Interval(0, 1)});
+    }
+  const AdaptiveMesh m = mesh_adaptive(patches, {.tolerance = 1e-3});
+  EXPECT_EQ(m.collapsed_edges, 4u);
+  EXPECT_EQ(m.boundary_edges, 0u);
+  EXPECT_TRUE(m.closed());
+  const MeshValidity v = validate(m.mesh);
+  EXPECT_TRUE(v.valid()) << describe(v);
+  EXPECT_EQ(v.euler_characteristic, 2);
+  EXPECT_NEAR(v.volume, kPi, 0.02);  // the area (4 pi) times the tolerance
 }
 
 TEST(AdaptiveMesh, SameMeshForAnyThreadCount) {

@@ -173,9 +173,12 @@ Curve offset_plate_profile(const ParameterValues& p);
 // model's extra patches).
 std::vector<ModelPatch> offset_plate_faces(const ParameterValues& p);
 // The spoon's mid-surface (shape_x(v), arc(u, v) + (0, bend_y(v))) before thickening, and
-// its half thickness thick_y(v) (functions of (u, v) = (x(0), x(1))).
+// its half thickness thick_y(v) (functions of (u, v) = (x(0), x(1))); the flat faces
+// closing its end sections (the model's extra patches): the handle's end (v = 0, normal -x)
+// and the tip (v = 1, normal +x), each bounded by the four quarters of its section.
 Fn spoon_mid_surface(const ParameterValues& p);
 Fn spoon_half_thickness(const ParameterValues& p);
+std::vector<ModelPatch> spoon_caps(const ParameterValues& p);
 // The keyboard key's curves (from its parameters): the rounded-square cross section in
 // [-1, 1]^2 (counterclockwise from (1, 0)), the front (yz_left) and back (yz_right) outlines
 // in the yz plane and the side outline in the xz plane (x = half width), curves of v from
