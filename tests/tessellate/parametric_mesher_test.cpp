@@ -260,6 +260,7 @@ TEST(AdaptiveMesh, PolesOfStraightRaysGiveNoFlatTriangles) {
   EXPECT_EQ(v.self_intersections, 0u) << describe(v);
   EXPECT_TRUE(v.valid()) << describe(v);
   EXPECT_NEAR(v.volume, kPi / 6.0, 0.05 * kPi / 6.0);  // a cone of radius 1 and height 1/2
+}
 
 // A tube periodic in u closed at each end by two half discs: one half disc's rim is the
 // tube's rim for u in [0, 1/2], the other's for u in [1/2, 1]; both touch the tube's seam

@@ -134,10 +134,11 @@ std::vector<Glue> match_part(const EdgeSamples& a, bool a_wraps, const EdgeSampl
   // samples favours); b may reach the seam from the other side (a cap's piece that starts or
   // ends where a's loop starts).
   auto other_end = [](std::int64_t t) { return t == 0 ? kGridSize : t == kGridSize ? std::int64_t{0} : -1; };
+  auto at = [](std::int64_t t, double found) { return t == 0 || t == kGridSize ? static_cast<double>(t) / kGridSize : found; };
   for (const auto& [s2, e2] : {std::pair{other_end(s), e}, std::pair{s, other_end(e)}}) {
     if (s2 < 0 || e2 < 0 || s2 == e2) continue;
-    const Glue h{a.edge, b.edge, e2 < s2, std::min(s2, e2), std::max(s2, e2)};
-    if (verified(h, a, b, compiled, eps, ev)) return {h};
+    if (verified(a, b, 0.0, 1.0, at(s2, *start), at(e2, *end), compiled, eps, ev))
+      return {Glue{a.edge, b.edge, e2 < s2, std::min(s2, e2), std::max(s2, e2)}};
   }
   // The other way round a's loop: through its seam (a at 0 = a at 1), where b is at t.
   const std::optional<double> seam = locate(b, a.at[0], compiled, eps, ev);
