@@ -48,6 +48,22 @@ ParamValue param_from_python(const std::string& procedure, const std::string& na
                               " (expected a number, a bool, a string or a 3-vector)");
 }
 
+// The arguments of a call of procedural model `name` (refused when there is no such model).
+NamedArgs model_arguments(const std::string& name, const py::dict& args) {
+  if (models::find_procedural_model(name) == nullptr)
+    throw std::invalid_argument("genmod.procedural: no procedural model named '" + name + "'");
+  NamedArgs named;
+  for (const auto& [key, value] : args) {
+    const std::string k = py::str(key);
+    named.emplace_back(k, param_from_python(name, k, value));
+  }
+  return named;
+}
+
+Camera looking_at(const std::array<double, 3>& eye, const std::array<double, 3>& target) {
+  return models::camera_looking_at(Vec3(eye[0], eye[1], eye[2]), Vec3(target[0], target[1], target[2]));
+}
+
 void bind_procedural(py::module_& m) {
   m.def("_procedural_models", [] {
     const ProcedureRegistry& registry = models::procedural_registry();
@@ -66,13 +82,7 @@ void bind_procedural(py::module_& m) {
     return out;
   });
   m.def("_mesh_procedural", [](const std::string& name, const py::dict& args, std::int64_t seed, int lod) {
-    if (models::find_procedural_model(name) == nullptr)
-      throw std::invalid_argument("genmod.procedural: no procedural model named '" + name + "'");
-    NamedArgs named;
-    for (const auto& [key, value] : args) {
-      const std::string k = py::str(key);
-      named.emplace_back(k, param_from_python(name, k, value));
-    }
+    const NamedArgs named = model_arguments(name, args);
     py::gil_scoped_release unlocked;
     return models::mesh_procedural_model(name, named, seed, lod);
   }, py::arg("name"), py::arg("args"), py::arg("seed"), py::arg("lod") = 0);
@@ -80,27 +90,15 @@ void bind_procedural(py::module_& m) {
   // bounds (empty when out of view), and that view (None for a model without bounds).
   m.def("_mesh_procedural_camera", [](const std::string& name, const py::dict& args, std::int64_t seed,
                                       std::array<double, 3> eye, std::array<double, 3> target) {
-    if (models::find_procedural_model(name) == nullptr)
-      throw std::invalid_argument("genmod.procedural: no procedural model named '" + name + "'");
-    NamedArgs named;
-    for (const auto& [key, value] : args) {
-      const std::string k = py::str(key);
-      named.emplace_back(k, param_from_python(name, k, value));
-    }
-    const Camera camera = models::camera_looking_at(Vec3(eye[0], eye[1], eye[2]), Vec3(target[0], target[1], target[2]));
+    const NamedArgs named = model_arguments(name, args);
+    const Camera camera = looking_at(eye, target);
     py::gil_scoped_release unlocked;
     return models::mesh_procedural_model(name, named, seed, camera);
   }, py::arg("name"), py::arg("args"), py::arg("seed"), py::arg("eye"), py::arg("target"));
   m.def("_procedural_view", [](const std::string& name, const py::dict& args, std::array<double, 3> eye,
                                std::array<double, 3> target) -> py::object {
-    if (models::find_procedural_model(name) == nullptr)
-      throw std::invalid_argument("genmod.procedural: no procedural model named '" + name + "'");
-    NamedArgs named;
-    for (const auto& [key, value] : args) {
-      const std::string k = py::str(key);
-      named.emplace_back(k, param_from_python(name, k, value));
-    }
-    const Camera camera = models::camera_looking_at(Vec3(eye[0], eye[1], eye[2]), Vec3(target[0], target[1], target[2]));
+    const NamedArgs named = model_arguments(name, args);
+    const Camera camera = looking_at(eye, target);
     const std::optional<BoxView> view = models::procedural_model_view(name, named, camera);
     if (!view) return py::none();
     py::dict d;
