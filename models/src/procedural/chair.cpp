@@ -15,17 +15,7 @@ namespace {
 
 // The arguments, checked (the body and the bounds both read them).
 SeatingShape chair_shape(const Arguments& a) {
-  SeatingShape s;
-  s.length = positive_real(a, "chair", "length");
-  s.depth = positive_real(a, "chair", "depth");
-  s.leg_length = positive_real(a, "chair", "legLength");
-  s.back_length = positive_real(a, "chair", "backLength");
-  s.segments = integer_in(a, "chair", "segments", 1, 64);
-  s.arms = a.boolean("arms");
-  s.bottom_arms = a.boolean("bottomArms");
-  s.shape = a.boolean("shape");
-  // Down to -1: the top row (one height unit) keeps half its height at the dip.
-  s.offset = real_in(a, "chair", "offSet", -1.0, 16.0);
+  SeatingShape s = shared_seating_shape(a, "chair");
   s.feet = a.boolean("feet");
   s.disc = !a.boolean("cubic");
   return s;

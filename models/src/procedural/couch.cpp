@@ -11,18 +11,9 @@ namespace {
 
 // The arguments, checked (the body and the bounds both read them).
 SeatingShape couch_shape(const Arguments& a) {
-  SeatingShape s;
-  s.length = positive_real(a, "couch", "length");
-  s.depth = positive_real(a, "couch", "depth");
-  s.leg_length = positive_real(a, "couch", "legLength");
-  s.back_length = positive_real(a, "couch", "backLength");
-  s.segments = integer_in(a, "couch", "segments", 1, 64);
+  SeatingShape s = shared_seating_shape(a, "couch");
   s.cushions = integer_in(a, "couch", "numCushions", 1, 16);
-  s.arms = a.boolean("arms");
-  s.bottom_arms = a.boolean("bottomArms");
   s.back_cushions = a.boolean("backCushions");
-  s.shape = a.boolean("shape");
-  s.offset = real_in(a, "couch", "offSet", -1.0, 16.0);
   return s;
 }
 

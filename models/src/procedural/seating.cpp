@@ -58,6 +58,21 @@ std::array<Vec3, 2> seating_bounds(const SeatingShape& s) {
   return padded_box(Vec3(0, -s.leg_length, 0), Vec3(s.cushions * s.length, top, s.depth + (s.feet ? 0.5 * du : 0.0)));
 }
 
+SeatingShape shared_seating_shape(const Arguments& a, std::string_view procedure) {
+  SeatingShape s;
+  s.length = positive_real(a, procedure, "length");
+  s.depth = positive_real(a, procedure, "depth");
+  s.leg_length = positive_real(a, procedure, "legLength");
+  s.back_length = positive_real(a, procedure, "backLength");
+  s.segments = integer_in(a, procedure, "segments", 1, 64);
+  s.arms = a.boolean("arms");
+  s.bottom_arms = a.boolean("bottomArms");
+  s.shape = a.boolean("shape");
+  // Down to -1: the top row (one height unit) keeps half its height at the dip.
+  s.offset = real_in(a, procedure, "offSet", -1.0, 16.0);
+  return s;
+}
+
 PolyMesh build_seating(const SeatingShape& s, const CallContext& context) {
   const int n = s.segments;
   const int nx = n * s.cushions;  // seat cells along x

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <string>
+#include <string_view>
 
 namespace genmod::models::detail {
 
@@ -21,6 +22,10 @@ struct SeatingShape {
   bool disc = false;  // the chair's round base (the listing's cubic = false): see seating.cpp
   double offset = 2.0;  // the shaped back top rises offset * backLength / segments / 2 in the middle
 };
+
+// The arguments the chair and the couch share (length, depth, legLength, backLength, segments,
+// arms, bottomArms, shape, offSet), checked; errors name `procedure`.
+SeatingShape shared_seating_shape(const Arguments& a, std::string_view procedure);
 
 // Checked by the callers; builds the seat in [0, cushions * length] x [-leg_length, ...] x
 // [0, depth], the back at the low z side, facing +z.
