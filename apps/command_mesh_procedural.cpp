@@ -57,13 +57,7 @@ ParamValue parse_value(const ProcedureSpec& spec, const std::string& name, const
 // "ex,ey,ez,tx,ty,tz": a camera at the eye looking at the target, +z up (the frame of the
 // written mesh), with camera.hpp's defaults for the rest (640 x 480 pixels, lod -8..0).
 Camera parse_camera(const std::string& text) {
-  std::vector<double> v;
-  std::size_t begin = 0;
-  while (begin <= text.size()) {
-    const std::size_t end = std::min(text.find(',', begin), text.size());
-    v.push_back(parse_number("--camera", text.substr(begin, end - begin)));
-    begin = end + 1;
-  }
+  const std::vector<double> v = parse_numbers("--camera", text);
   if (v.size() != 6)
     throw UsageError("--camera expects EX,EY,EZ,TX,TY,TZ (the eye and the point it looks at, 6 numbers), got '" +
                      text + "'");

@@ -33,15 +33,20 @@ double positive_option(const Arguments& a, std::initializer_list<std::string_vie
   return v;
 }
 
-// "x0,y0,z0,x1,y1,z1".
-Box3 parse_box(const std::string& text) {
+std::vector<double> parse_numbers(const std::string& option, const std::string& text) {
   std::vector<double> v;
   std::size_t begin = 0;
   while (begin <= text.size()) {
     const std::size_t end = std::min(text.find(',', begin), text.size());
-    v.push_back(parse_number("--box", text.substr(begin, end - begin)));
+    v.push_back(parse_number(option, text.substr(begin, end - begin)));
     begin = end + 1;
   }
+  return v;
+}
+
+// "x0,y0,z0,x1,y1,z1".
+Box3 parse_box(const std::string& text) {
+  const std::vector<double> v = parse_numbers("--box", text);
   if (v.size() != 6) throw UsageError("--box expects x0,y0,z0,x1,y1,z1 (6 numbers), got '" + text + "'");
   Box3 box;
   for (int k = 0; k < 3; ++k) {

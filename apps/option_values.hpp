@@ -23,6 +23,8 @@ double positive_option(const Arguments& a, std::initializer_list<std::string_vie
 
 // "x0,y0,z0,x1,y1,z1" with x0 < x1, y0 < y1, z0 < z1.
 Box3 parse_box(const std::string& text);
+// "a,b,c,...": every comma-separated field a number (errors name `option`).
+std::vector<double> parse_numbers(const std::string& option, const std::string& text);
 
 // The output must be writable: an existing file (not a directory) writable itself, a new one
 // in an existing, writable directory; so that a long computation does not end in a failed
