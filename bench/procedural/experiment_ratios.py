@@ -52,7 +52,9 @@ def main(path):
             print(f"  {label:52s} {median[a] / median[b]:6.3f}  [{thesis}]")
     print("\nCold penalty of a cacheable call (its miss: key, lookup, store / the same call uncached; issue 12: < 1.05):")
     penalties = [
-        ("Luggage (cold / parts cached cold)", "BM_LuggageCacheCold/30", "BM_LuggagePartsCachedCold/30"),
+        ("Luggage, call (cold / parts cached cold; a copy)", "BM_LuggageCacheCold/30", "BM_LuggagePartsCachedCold/30"),
+        ("Luggage, call_shared (cold / parts cached cold)", "BM_LuggageSharedCacheCold/30",
+         "BM_LuggageSharedPartsCachedCold/30"),
         ("Luggage's leg (leg cold / leg off)", "BM_LuggageLegCold", "BM_LuggageLegAlone"),
         ("Synthetic leg (cache_bench)", "BM_LegCold", "BM_LegOff"),
     ]

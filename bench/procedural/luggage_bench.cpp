@@ -10,7 +10,10 @@
 //   parts_cold / parts_warm: the luggage's own cacheable flag off, as in the thesis (only parts
 //               cached): warm = a chest hit and 30 leg hits, assembled again.
 // Cold penalty of the luggage's own caching (key, miss, store) = cold / parts_cold; of one leg
-// = leg_cold / leg_off. Run with repetitions and compare the medians within one run, e.g.
+// = leg_cold / leg_off. `call` hands out an independent mesh to edit, so a miss costs one copy of
+// the luggage for the cache (about 4 ms for its 34,942 faces, most of it the kernel faulting in
+// fresh pages); the *_shared runs use `call_shared`, the read-only path of `genmod mesh`, batch
+// and the gallery, where a miss stores the built mesh itself. Run with repetitions and compare the medians within one run, e.g.
 //   genmod_procedural_bench --benchmark_filter=Luggage --benchmark_repetitions=10
 //       --benchmark_report_aggregates_only=true
 // The thesis's ratios (cache / no cache): 0.53 first, 0.48-0.50 remainder; claim 13 asks for
@@ -40,7 +43,7 @@ void setup(ProcedureRegistry& r, bool whole) {
   });
 }
 
-void run_luggage(benchmark::State& state, bool whole, Cache cache) {
+void run_luggage(benchmark::State& state, bool whole, Cache cache, bool shared = false) {
   ProcedureRegistry r;
   setup(r, whole);
   const NamedArgs args{{"numLegs", state.range(0)}};
@@ -54,7 +57,10 @@ void run_luggage(benchmark::State& state, bool whole, Cache cache) {
       r.clear_caches();
       state.ResumeTiming();
     }
-    benchmark::DoNotOptimize(r.call("luggage", args, seed7()));
+    if (shared)
+      benchmark::DoNotOptimize(r.call_shared("luggage", args, seed7()));
+    else
+      benchmark::DoNotOptimize(r.call("luggage", args, seed7()));
   }
   const double n = static_cast<double>(state.iterations());
   for (const char* name : {"luggage", "leg"}) {
@@ -69,6 +75,8 @@ void BM_LuggageCacheCold(benchmark::State& state) { run_luggage(state, true, Cac
 void BM_LuggageCacheWarm(benchmark::State& state) { run_luggage(state, true, Cache::Warm); }
 void BM_LuggagePartsCachedCold(benchmark::State& state) { run_luggage(state, false, Cache::Cold); }
 void BM_LuggagePartsCachedWarm(benchmark::State& state) { run_luggage(state, false, Cache::Warm); }
+void BM_LuggageSharedCacheCold(benchmark::State& state) { run_luggage(state, true, Cache::Cold, true); }
+void BM_LuggageSharedPartsCachedCold(benchmark::State& state) { run_luggage(state, false, Cache::Cold, true); }
 
 // One leg, the cached unit: its build cost against the whole luggage's, and its cold penalty.
 void run_leg(benchmark::State& state, Cache cache) {
@@ -96,6 +104,8 @@ BENCHMARK(BM_LuggageCacheCold)->Arg(30)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LuggageCacheWarm)->Arg(30)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LuggagePartsCachedCold)->Arg(30)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LuggagePartsCachedWarm)->Arg(30)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LuggageSharedCacheCold)->Arg(30)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_LuggageSharedPartsCachedCold)->Arg(30)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LuggageLegAlone)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_LuggageLegCold)->Unit(benchmark::kMicrosecond);
 

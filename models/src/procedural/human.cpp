@@ -7,7 +7,7 @@
 // head (height, across, front to back), the arms 3 heads long and 9/23 head thick, the legs 4
 // heads from hip to sole, the head one head high on a neck. The parts are built in their own
 // frames and bridged to the faces the torso names for them (neck, shoulder_r/l, hip_r/l); the
-// figure's right is -x (the thesis's 0-1% x selections), its front +z, the soles at y = 0.
+// egg figure (cubical = false, Experiment 3's Humpty-Dumpty) has no head. The figure's right is -x (the thesis's 0-1% x selections), its front +z, the soles at y = 0.
 //
 // Numbers the thesis leaves out (its Arm, Leg, Head listings are missing): the gaps the bridges
 // span (0.08 head at the hips and neck, 0.1 head at the shoulders), the legs' top (0.7 x 0.78
@@ -103,8 +103,9 @@ PolyMesh build_human(const Arguments& a, const CallContext& context) {
     half_turn.m = {{{-1, 0, 0, c[0][0] - shoulder_gap}, {0, 1, 0, c[2][1]}, {0, 0, -1, c[2][2]}}};
     attach_part(w, arm, "armroot", shoulder_r, half_turn, "shoulder_r");
   }
-  // Neck and head.
-  {
+  // Neck and head; the egg figure has none (Experiment 3's Humpty-Dumpty: an egg with arms and
+  // legs), its neck faces stay part of the egg.
+  if (cubical) {
     const std::shared_ptr<const PolyMesh> head_part = context.call_shared("head", {{"head", H}, {"subdivisions", levels}});
     const PolyMesh& head = *head_part;  // shared: a hit is not copied
     const auto c = centre(neck);
@@ -132,7 +133,7 @@ ProceduralModelDef human_definition() {
       {{"height", "in feet (the thesis's unit; 6 ft = 1.83 m), at most 100; the soles at y = 0"},
        {"tummy", "belly forward, in metres (-0.1..1 of the torso's depth)"},
        {"butt", "buttocks back, in metres (-0.1..1 of the torso's depth)"},
-       {"cubical", "the extruded torso (true) or the egg torso of the base-shape experiment (false)"},
+       {"cubical", "the extruded torso with a head (true) or Humpty-Dumpty, the base-shape experiment's egg torso with arms and legs, no head (false)"},
        {"subdivisions", "sqrt(2) levels of the limbs and head, 0-4; the lod adds to it (camera.hpp)"}}};
   return {std::move(spec), std::move(info)};
 }

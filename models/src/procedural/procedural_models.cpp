@@ -3,7 +3,6 @@
 
 #include "procedural_model_defs.hpp"
 
-#include "genmod/procedural/affine.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -72,13 +71,14 @@ ProcedureRegistry& procedural_registry() {
 
 namespace {
 
+// The registry's shared mesh is only read here (no copy of a cached model: a hit costs a lookup).
 Mesh meshed_z_up(const std::string& name, const NamedArgs& args, const Context& context) {
-  PolyMesh mesh = procedural_registry().call(name, args, context);
-  // y up -> z up: (x, y, z) -> (x, -z, y), a rotation (orientation kept).
-  Affine to_z_up;
-  to_z_up.m = {{{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}}};
-  apply_affine(to_z_up, mesh);
-  return to_triangle_mesh(mesh);
+  const std::shared_ptr<const PolyMesh> mesh = procedural_registry().call_shared(name, args, context);
+  Mesh triangles = to_triangle_mesh(*mesh);
+  // y up -> z up: (x, y, z) -> (x, -z, y), a rotation (orientation kept), exact in doubles;
+  // "+ 0.0" turns -0 into +0, as the affine map used before did (the same bytes in files).
+  for (auto& v : triangles.vertices) v = {v[0] + 0.0, -v[2] + 0.0, v[1] + 0.0};
+  return triangles;
 }
 
 Vec3 to_y_up(const Vec3& v) { return Vec3(v[0], v[2], -v[1]); }
