@@ -96,7 +96,7 @@ const Command kRenderCommand{
     "  --size N       image width and height in pixels (default 1024)\n"
     "  -o, --output   PNG file to write (default out.png)\n"
     "  --threads T    worker threads, 0 = all cores (default 0)\n"
-    "  --tiles A,B,.. tile widths of the subdivision levels below the image, decreasing (default 256,64,16)\n"
+    "  --tiles A,B,.. tile widths of the subdivision levels below the image, decreasing (default 2048,1024,...,32,16: halving)\n"
     "  --repeat R     render R times and report the median time (default 1)\n"
     "  --stats        print the tile subdivision statistics\n"
     "  --brute-force  evaluate every pixel without intervals (the reference, for comparison)\n"

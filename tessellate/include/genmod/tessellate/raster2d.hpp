@@ -46,11 +46,14 @@ struct RasterOptions {
   Interval x_range{-1.0, 1.0};          // region covered by the image (bounded, nonzero width)
   Interval y_range{-1.0, 1.0};
   // Tile widths in pixels below the whole image, strictly decreasing, >= 1, at most
-  // kMaxTileLevels of them. The default was
-  // the fastest for Prospero at 1024: interval evaluation plus pruning costs about as much per
-  // clause as 100 batch point evaluations, so small tiles do not pay, and the last level's
-  // tiles hold 256 pixels.
-  std::vector<int> tile_sizes{256, 64, 16};
+  // kMaxTileLevels of them. The default halves the tile at every level down to 16 pixels
+  // (levels not smaller than the image are skipped): each level prunes the tape a little
+  // further, so its children are evaluated with shorter tapes, and four children per tile
+  // waste less work on tiles that turn out empty. For Prospero this costs 9% fewer
+  // instructions than 256, 64, 16 at 256 x 256 and 1024 x 1024, and 24% fewer at 4096 x 4096.
+  // Tiles of 16 pixels stay the last level: interval evaluation plus pruning costs about as
+  // much per clause as 100 batch point evaluations, so smaller tiles do not pay.
+  std::vector<int> tile_sizes{2048, 1024, 512, 256, 128, 64, 32, 16};
   int threads = 0;                      // worker threads; 0 = all cores
 };
 
