@@ -108,8 +108,9 @@ void GradientEvaluator::eval(const Tape& tape, std::span<const double> point) {
       const detail::DagForm form = detail::dag_form_of_immediate(c.op);
       const double x = form.swapped ? bv : av, y = form.swapped ? av : bv;
       PointAlgebra m;
-      auto coefficient = [&](int k) {
-        return detail::derivative_rule(m, form.op, v, x, y, k == 0 ? 1.0 : 0.0, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0);
+      auto coefficient = [&](int operand) {
+        return detail::derivative_rule(m, form.op, v, x, y, operand == 0 ? 1.0 : 0.0, operand == 1 ? 1.0 : 0.0,
+                                       operand == 2 ? 1.0 : 0.0);
       };
       if (imm) {
         da = coefficient(form.swapped ? 1 : 0);

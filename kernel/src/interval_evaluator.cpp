@@ -401,12 +401,12 @@ bool IntervalEvaluator::call(const Tape& tape, std::uint32_t call) {
     arg_err |= err_[reg];
   }
   std::fill_n(slot_err_.begin() + cs.first_slot, cs.num_outputs, arg_err);
-  std::fesetround(FE_TONEAREST);
+  interval_detail::set_rounding_direction(interval_detail::kRoundNearest);
   const CustomOp& op = *cs.op;
   const bool continuous =
       op.inclusion_continuous(call_args_, std::span(slots_).subspan(cs.first_slot, cs.num_outputs),
                               std::span(slot_err_).subspan(cs.first_slot, cs.num_outputs));
-  std::fesetround(FE_UPWARD);
+  interval_detail::set_rounding_direction(interval_detail::kRoundUpward);
   return continuous;
 }
 
