@@ -80,19 +80,20 @@ TEST(AdaptiveGallerySolid, FullCircleBeamIsOneClosedRing) {
 // The bear and its hairs are one closed surface (issue 14: the tubes used to be separate
 // closed surfaces sunk into the scalp, 2 rows^2 + 1 components that intersect): a sphere
 // (Euler characteristic 2), valid, and every hair's tip (furry_bear_hair) is a vertex of it.
-// (hair_rows 3 at this tolerance still has 20 intersecting pairs, and at 14 the hairs near the
-// poles cross each other: the issue's note.)
+// Few rows give wide cells near the poles (their folds were cured by the polar caps), more
+// rows more hairs. (At hair_rows 14 with the default kappa and hair_length the top row's
+// hairs, combed toward the pole, cross each other: a property of the model, not the mesh.)
 TEST(FurryBearMesh, ScalpAndHairsAreOneSphere) {
   const Model& bear = find_model("furry_bear");
-  for (const double rows : {6.0, 8.0}) {
+  for (const double rows : {3.0, 8.0}) {
     const ParameterValues p = resolve_parameters(bear, {{"hair_rows", rows}});
     const Fn scalp = bear.build(p);
     const double tol = 3e-3 * model_extent(bear, scalp, p);
     const AdaptiveMesh m = mesh_model_adaptive(bear, scalp, p, {.tolerance = tol});
     ASSERT_TRUE(m.limits_hit.empty());
     EXPECT_LE(m.distance_bound, tol);
-    // The root rings are shared bit for bit; cell sides and tips agree to rounding (measured
-    // 2.2e-16).
+    // The root rings are shared bit for bit; cell sides, caps and tips agree to rounding
+    // (measured 2.2e-16).
     EXPECT_LT(m.seam_deviation, 1e-12);
     const MeshValidity v = validate(m.mesh);
     EXPECT_TRUE(v.valid()) << describe(v);

@@ -172,6 +172,9 @@ std::vector<HairRoot> furry_bear_roots(const ParameterValues& p);
 // S((1 - r) e(phi_k(t)) + r side_k(t)), e the root ellipse at phi_k(t) = 2 pi (k + t) / 4
 // - 3 pi / 4 and side_k(t) the cell's side from corner to corner, counterclockwise. The piece's
 // r = 0 edge is the quarter of the root ring that its hair's tube starts from, sample for sample.
+// The cells of the first and last rows start at v = 0.2 / R and end at 1 - 0.2 / R: the
+// list ends with the polar caps, the scalp over v in [0, 0.2 / R] and then [1 - 0.2 / R, 1],
+// one piece per column of cells (u in [i, i + 1] / (2 R)).
 std::vector<ModelPatch> furry_bear_scalp_pieces(const ParameterValues& p);
 // The bear's hairs as surfaces: one closed tube per root (furry_bear_roots order) of
 // (theta, s) = (x(0), x(1)), periodic in theta, from the root ring on the scalp (s = 0) to the
