@@ -6,10 +6,16 @@
 //   S -> S + hair_length normalize(N + kappa S_v),   N = S_u x S_v (outward),
 // combed toward S_v (up the body): it leans from the normal toward S_v by the angle
 // atan(kappa |S_v| / |N|) (N is perpendicular to S_v). The main surface is the scalp; the
-// hair field is furry_bear_hair(p) (for renderers that draw segments or texels), and a grid
-// of hairs sampled from it are the model's extra patches (furry_bear_hairs): thin closed
-// tubes around the hair segments, so a mesher outputs the fur with the scalp. The poles (v = 0, 1)
-// have N = 0 (the hair there is along S_v); the grid keeps away from them.
+// hair field is furry_bear_hair(p) (for renderers that draw segments or texels).
+// For meshing, the bear is one closed surface: a grid of hairs, one per cell of the scalp's
+// parameter square, each a thin closed tube that starts on the scalp at a root ring (the
+// image of a small ellipse about the cell's centre), and the scalp with a hole at each root
+// (the root's cell in four pieces between the ellipse and the cell's sides). The union of
+// scalp and hair is a trim (Snyder's Algorithm 5.4 with the intersection curve known
+// exactly): the ring is an edge of both, evaluated by the same operations at the same
+// parameters, so the mesher glues them sample for sample and no surface/surface
+// intersection is needed. Two caps about the poles (v < 0.2 / hair_rows and the same at the
+// top) are meshed as the plain scalp; the first and last rows of cells start at their rims.
 #include "genmod/models/gallery.hpp"
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/kernel/tape.hpp"
@@ -22,6 +28,8 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace genmod::models {
 
@@ -49,34 +57,89 @@ int hair_rows_of(const ParameterValues& p) {
   return static_cast<int>(rows);
 }
 
-using V3 = std::array<double, 3>;
-V3 cross3(const V3& a, const V3& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-V3 unit(const V3& a) {
-  const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-  return {a[0] / n, a[1] / n, a[2] / n};
+// The hair at the centre of each cell: its scalp point, direction and the root ellipse.
+struct Hair {
+  HairRoot root;
+  std::array<double, 3> base, direction;
+};
+
+// Angle of the root ellipse at the start of piece 0 (the cell's lower left corner's side).
+constexpr double kPhi0 = -0.75 * std::numbers::pi;
+
+// The root ellipse at theta in [0, 1] (one turn from kPhi0) as offsets from the cell's centre
+// in the scalp's parameters. The hair tube and the scalp pieces both build it from theta by
+// this one function and add it to the centre last, so their shared edge is evaluated by the
+// same operations at the same (dyadic) theta: bitwise equal.
+std::array<Fn, 2> root_offset(const HairRoot& r, const Fn& theta) {
+  const Fn phi = theta * (2.0 * std::numbers::pi) + kPhi0;
+  return {r.a * cos(phi), r.b * sin(phi)};
 }
 
-// One hair as a closed thin tube of (theta, s) = (x(0), x(1)) around the segment from
-// root = S - 2 r d (sunk below the scalp point S, so the tube's closed root end is hidden in
-// the body) to the tip S + hair_length d:
-//   axis(s) + rho(s) (cos(2 pi theta) e1 + sin(2 pi theta) e2),  rho(s) = (27/4) r s (1 - s)^2,
-// rho being 0 at both ends (two poles: the tube is closed), r at s = 1/3 and tapering to the
-// tip. e1, e2, d are a right-handed frame (d along the hair), so S_theta x S_s points away
-// from the axis.
-Fn hair_tube(const V3& scalp_point, const V3& tip, double r) {
-  const V3 d = unit({tip[0] - scalp_point[0], tip[1] - scalp_point[1], tip[2] - scalp_point[2]});
-  const V3 root{scalp_point[0] - 2.0 * r * d[0], scalp_point[1] - 2.0 * r * d[1], scalp_point[2] - 2.0 * r * d[2]};
-  // Any axis not close to d gives the frame.
-  const V3 helper = std::abs(d[0]) < 0.6 ? V3{1.0, 0.0, 0.0} : V3{0.0, 1.0, 0.0};
-  const V3 e1 = unit(cross3(helper, d)), e2 = cross3(d, e1);
-  const Fn theta = x(0) * (2.0 * std::numbers::pi), s = x(1);
-  const Fn c = cos(theta), sn = sin(theta), radius = (6.75 * r) * s * square(1.0 - s);
+Fn scalp_at(const Fn& scalp_surface, const Fn& u, const Fn& v) {
+  const int uv[2] = {0, 1};
+  return compose_all(scalp_surface, uv, cat({u, v}));
+}
+
+std::vector<Hair> hairs_of(const ParameterValues& p) {
+  const int rows = hair_rows_of(p), around = 2 * rows;
+  const double radius = detail::require_positive(p, "hair_radius");
+  const double length = detail::require_positive(p, "hair_length");
+  const Fn s = scalp(p);
+  const Tape hair(furry_bear_hair(p), std::vector<int>{0, 1});
+  const Tape jacobian(cat({derivative(s, 0), derivative(s, 1)}), std::vector<int>{0, 1});
+  PointEvaluator ev;
+  std::vector<Hair> hairs;
+  for (int j = 0; j < rows; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double u = (i + 0.5) / around, v = (j + 0.5) / rows;
+      // Copies: an evaluation's result lives in the evaluator's scratch until the next one.
+      const auto hair_at = ev.eval(hair, {u, v});
+      const std::vector<double> h(hair_at.begin(), hair_at.end());
+      const auto jac = ev.eval(jacobian, {u, v});
+      const double a = radius / std::hypot(jac[0], jac[1], jac[2]), b = radius / std::hypot(jac[3], jac[4], jac[5]);
+      // The ellipse within the middle half of its cell keeps the four pieces around it
+      // fan-like (each segment from the ellipse to the cell's side stays in its quarter).
+      if (!(a <= 0.25 / around && b <= 0.25 / rows))
+        throw std::invalid_argument("parameter 'hair_radius' (" + std::to_string(radius) +
+                                    ") is too large for hair_rows " + std::to_string(rows) +
+                                    ": the root of the hair at (u, v) = (" + std::to_string(u) + ", " +
+                                    std::to_string(v) + ") does not fit in its cell");
+      hairs.push_back({{u, v, a, b},
+                       {h[0], h[1], h[2]},
+                       {(h[3] - h[0]) / length, (h[4] - h[1]) / length, (h[5] - h[2]) / length}});
+    }
+  return hairs;
+}
+
+// The tube of one hair: T(theta, s) = E + s L d + ((1 - s)(1 + s) - 1)(E - S). At s = 0 the
+// added terms are exact zeros, so T is E bit for bit (the piece's r = 0 edge); at s = 1 it is
+// the tip S + L d (a pole).
+Fn hair_tube(const Fn& scalp_surface, const Hair& h, double length) {
+  const auto [ou, ov] = root_offset(h.root, x(0));
+  const Fn ring = scalp_at(scalp_surface, h.root.u + ou, h.root.v + ov);
+  const Fn s = x(1), shrink = (1.0 - s) * (1.0 + s) - 1.0;
   std::vector<Fn> xyz;
-  for (int k = 0; k < 3; ++k)
-    xyz.push_back(root[k] + s * (tip[k] - root[k]) + radius * (e1[k] * c + e2[k] * sn));
+  for (int k = 0; k < 3; ++k) xyz.push_back(ring[k] + s * (length * h.direction[k]) + shrink * (ring[k] - h.base[k]));
   return cat(xyz);
+}
+
+// Piece k (0 bottom, 1 right, 2 top, 3 left) of a hair's cell between its root ellipse and
+// the cell's side: (t, r) -> S(c + (1 - r) e + r side), c the cell's centre, e the ellipse's
+// offset at theta = (k + t) / 4 (exact in binary for the mesher's dyadic t), side the offset
+// of the side from corner k to corner k + 1, counterclockwise. Blending offsets rather than
+// points keeps the interval enclosures narrow (a blend of two values near u = 1 would widen
+// by |u| times the width of r), and at r = 1 the corners come out as the neighbours' (exactly
+// where the difference from the centre is exact).
+Fn scalp_piece(const Fn& scalp_surface, const HairRoot& root, double ul, double uh, double vl, double vh, int k) {
+  // Differences from the centre (exact where Sterbenz applies: within a factor 2, or 0).
+  const double cu[5] = {ul - root.u, uh - root.u, uh - root.u, ul - root.u, ul - root.u};
+  const double cv[5] = {vl - root.v, vl - root.v, vh - root.v, vh - root.v, vl - root.v};
+  const Fn t = x(0), r = x(1);
+  const auto [eu, ev] = root_offset(root, t * 0.25 + 0.25 * k);
+  auto side = [&](const double c[5]) { return c[k] == c[k + 1] ? Fn(c[k]) : (1.0 - t) * c[k] + t * c[k + 1]; };
+  const Fn u = root.u + ((1.0 - r) * eu + r * side(cu));
+  const Fn v = root.v + ((1.0 - r) * ev + r * side(cv));
+  return scalp_at(scalp_surface, u, v);
 }
 }  // namespace
 
@@ -89,22 +152,50 @@ Fn furry_bear_hair(const ParameterValues& p) {
   return cat({s, s + length * direction});
 }
 
-std::vector<ModelPatch> furry_bear_hairs(const ParameterValues& p) {
-  const int rows = hair_rows_of(p);
-  const double radius = detail::require_positive(p, "hair_radius");
-  const Tape hair(furry_bear_hair(p), std::vector<int>{0, 1});
-  PointEvaluator ev;
-  std::vector<ModelPatch> hairs;
-  const int around = 2 * rows;
+std::vector<HairRoot> furry_bear_roots(const ParameterValues& p) {
+  std::vector<HairRoot> roots;
+  for (const Hair& h : hairs_of(p)) roots.push_back(h.root);
+  return roots;
+}
+
+std::vector<ModelPatch> furry_bear_scalp_pieces(const ParameterValues& p) {
+  const Fn s = scalp(p);
+  const int rows = hair_rows_of(p), around = 2 * rows;
+  const std::vector<Hair> hairs = hairs_of(p);
+  // The polar caps: the first and last rows of cells would reach the poles as wedges of
+  // 360 / (2 rows) degrees, and with few rows (2 to 4) the triangles of such a wide wedge
+  // near the flat bottom folded over each other (16 to 28 intersecting pairs at the gallery
+  // test's tolerance) although within the distance bound. Near a pole the scalp is meshed
+  // as the plain surface of revolution instead, out to v = cap (below every root ellipse,
+  // whose lowest v is >= 0.25 / rows), and the cells start there.
+  const double cap = 0.2 / rows;
+  std::vector<ModelPatch> pieces;
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < around; ++i) {
-      const double u = (i + 0.5) / around, v = (j + 0.5) / rows;
-      const auto h = ev.eval(hair, {u, v});
-      ModelPatch patch{hair_tube({h[0], h[1], h[2]}, {h[3], h[4], h[5]}, radius)};
-      patch.periodic_u = true;
-      hairs.push_back(patch);
+      const double ul = static_cast<double>(i) / around, uh = static_cast<double>(i + 1) / around;
+      const double vl = j == 0 ? cap : static_cast<double>(j) / rows;
+      const double vh = j == rows - 1 ? 1.0 - cap : static_cast<double>(j + 1) / rows;
+      for (int k = 0; k < 4; ++k)
+        pieces.push_back({scalp_piece(s, hairs[static_cast<std::size_t>(j * around + i)].root, ul, uh, vl, vh, k)});
     }
-  return hairs;
+  // One cap piece per column of cells, so that each meets its cells' sides edge to edge (one
+  // periodic cap would meet them in parts at rounded grid parameters: 1.2e-9 apart).
+  for (const auto& [lo, hi] : {std::pair{0.0, cap}, std::pair{1.0 - cap, 1.0}})
+    for (int i = 0; i < around; ++i)
+      pieces.push_back({s, Interval(static_cast<double>(i) / around, static_cast<double>(i + 1) / around), Interval(lo, hi)});
+  return pieces;
+}
+
+std::vector<ModelPatch> furry_bear_hairs(const ParameterValues& p) {
+  const Fn s = scalp(p);
+  const double length = detail::require_positive(p, "hair_length");
+  std::vector<ModelPatch> tubes;
+  for (const Hair& h : hairs_of(p)) {
+    ModelPatch tube{hair_tube(s, h, length)};
+    tube.periodic_u = true;
+    tubes.push_back(tube);
+  }
+  return tubes;
 }
 
 namespace detail {
@@ -112,21 +203,28 @@ namespace detail {
 Model furry_bear_model() {
   Model m;
   m.name = "furry_bear";
-  m.description = "thesis Fig 3.23: a profile-product scalp carrying a combed hair field (R^2 -> R^6), hairs output as thin tubes (extra patches)";
+  m.description = "thesis Fig 3.23: a profile-product scalp carrying a combed hair field (R^2 -> R^6), meshed as one closed surface: the scalp with a hole at each hair's root ring, the hair a tube from it";
   m.parameters = {{"size", 1.0, "half the body's height (the body spans z in [-size, size])"},
                   {"hair_length", 0.08, "length of every hair"},
                   {"kappa", 1.5, "combing: the hair leans from the normal N toward S_v by atan(kappa |S_v| / |N|)"},
                   {"hair_rows", 12, "hairs output: hair_rows rows (in v) of 2 hair_rows hairs (in u), a whole number in [1, 14]"},
-                  {"hair_radius", 0.004, "largest radius of a hair (each hair is a thin closed tube, thickest near the scalp, pointed at the tip)"}};
+                  {"hair_radius", 0.004, "radius of a hair at its root on the scalp (each hair is a thin tube from a root ring on the scalp, narrowing as 1 - s^2 to a point at its tip)"}};
   m.build = [](const ParameterValues& p) {
     require_positive(p, "hair_length");
     require_positive(p, "hair_radius");
-    hair_rows_of(p);
     kappa_of(p);
+    hairs_of(p);  // hair_rows, and every root fits in its cell
     return scalp(p);
   };
   m.periodic_u = true;
-  m.extra_patches = furry_bear_hairs;
+  // The scalp's pieces first, then the tubes: the mesher glues each piece's quarter of a
+  // root ring to the tube's whole ring.
+  m.extra_patches = [](const ParameterValues& p) {
+    std::vector<ModelPatch> patches = furry_bear_scalp_pieces(p), tubes = furry_bear_hairs(p);
+    patches.insert(patches.end(), tubes.begin(), tubes.end());
+    return patches;
+  };
+  m.surface_in_extra_patches = true;
   return m;
 }
 

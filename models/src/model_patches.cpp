@@ -63,7 +63,8 @@ std::vector<ModelPatch> solid_faces(const Model& model, const Fn& surface) {
 
 std::vector<ModelPatch> model_patches(const Model& model, const Fn& surface, const ParameterValues& p) {
   if (model.solid) return solid_faces(model, surface);
-  std::vector<ModelPatch> patches{{surface, model.u, model.v, model.periodic_u, model.periodic_v}};
+  std::vector<ModelPatch> patches;
+  if (!model.surface_in_extra_patches) patches.push_back({surface, model.u, model.v, model.periodic_u, model.periodic_v});
   if (model.extra_patches) {
     std::vector<ModelPatch> extra = model.extra_patches(p);
     patches.insert(patches.end(), extra.begin(), extra.end());

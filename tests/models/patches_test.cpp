@@ -1,6 +1,6 @@
 // Multi-patch models (Model::extra_patches, model_patches): the plate's top and bottom faces
 // close its side walls (their edges are the walls' edges, the patches enclose a volume), and
-// the furry bear's hairs are output as thin closed tubes that follow hair_length and kappa.
+// the furry bear's hairs are tubes rooted in the scalp that follow hair_length and kappa.
 #include "genmod/models/gallery.hpp"
 #include "genmod/operators/vector.hpp"
 
@@ -115,44 +115,54 @@ TEST(OffsetPlate, FacesCloseTheWalls) {
   EXPECT_GT(std::abs(walls_only[2] - walls_only[0]), 0.5 * vol[2]);
 }
 
-// The hairs: 2 hair_rows^2 closed tubes, each around the hair segment of furry_bear_hair
-// (from its scalp point to its tip) extended 2 hair_radius below the scalp: the point at
-// (theta, s) is at distance rho(s) = (27/4) r s (1 - s)^2 from the axis point at s, with
-// poles at the sunk root and at the tip.
-TEST(FurryBear, HairsAreClosedTubesAlongTheHairField) {
+// The hairs: 2 hair_rows^2 tubes, each from a root ring on the scalp (the image of the root
+// ellipse about its cell's centre) to the tip of furry_bear_hair at the centre; the scalp is
+// left to its pieces, four per cell, whose r = 0 edges are the root ring bit for bit.
+TEST(FurryBear, HairsStartOnTheScalpAtTheirRootRing) {
   const Model& m = find_model("furry_bear");
   const ParameterValues p = resolve_parameters(m, {{"hair_rows", 5}});
-  const std::vector<ModelPatch> hairs = furry_bear_hairs(p);
+  const std::vector<ModelPatch> hairs = furry_bear_hairs(p), pieces = furry_bear_scalp_pieces(p);
+  const std::vector<HairRoot> roots = furry_bear_roots(p);
   ASSERT_EQ(hairs.size(), 50u);
-  const std::vector<ModelPatch> all = model_patches(m, m.build(p), p);
-  EXPECT_EQ(all.size(), 51u);
-  Eval field(furry_bear_hair(p));
+  ASSERT_EQ(roots.size(), 50u);
+  ASSERT_EQ(pieces.size(), 220u);  // four per cell and the polar caps, ten each
+  EXPECT_EQ(model_patches(m, m.build(p), p).size(), 270u);  // the whole scalp is not among them
+  const Fn scalp = m.build(p);
+  Eval field(furry_bear_hair(p)), surface(scalp);
   const double r = p.at("hair_radius"), length = p.at("hair_length");
   for (int j = 0; j < 5; ++j)
     for (int i = 0; i < 10; ++i) {
-      const ModelPatch& hair = hairs[static_cast<std::size_t>(j * 10 + i)];
-      EXPECT_TRUE(hair.periodic_u);
-      const auto h = field({(i + 0.5) / 10, (j + 0.5) / 5});
-      std::vector<double> d(3);
-      for (int k = 0; k < 3; ++k) d[k] = (h[k + 3] - h[k]) / length;
-      EXPECT_NEAR(norm3(d), 1.0, 1e-12);  // the segment has length hair_length
-      Eval tube(hair.surface), normal(cross(derivative(hair.surface, 0), derivative(hair.surface, 1)));
-      for (double s : {0.0, 0.1, 1.0 / 3.0, 0.6, 1.0})
-        for (double a : {0.0, 0.3, 0.71}) {
-          const auto q = tube({a, s});
-          std::vector<double> off(3);
-          for (int k = 0; k < 3; ++k) off[k] = q[k] - (h[k] - 2 * r * d[k] + s * (length + 2 * r) * d[k]);
-          EXPECT_NEAR(norm3(off), 6.75 * r * s * (1 - s) * (1 - s), 1e-12) << s;
-          EXPECT_NEAR(dot3(off, d), 0.0, 1e-12);  // in the plane across the axis
-          if (s > 0 && s < 1) {
-            EXPECT_GT(dot3(normal({a, s}), off), 0.0);  // facing away from the axis
-          }
-        }
-      EXPECT_NEAR(norm3(std::vector<double>{tube({0.4, 1.0 / 3.0})[0] - tube({0.9, 1.0 / 3.0})[0],
-                                            tube({0.4, 1.0 / 3.0})[1] - tube({0.9, 1.0 / 3.0})[1],
-                                            tube({0.4, 1.0 / 3.0})[2] - tube({0.9, 1.0 / 3.0})[2]}),
-                  2 * r, 1e-12);  // opposite points at the thickest place: the diameter
+      const std::size_t h = static_cast<std::size_t>(j * 10 + i);
+      const HairRoot& root = roots[h];
+      EXPECT_DOUBLE_EQ(root.u, (i + 0.5) / 10);
+      EXPECT_DOUBLE_EQ(root.v, (j + 0.5) / 5);
+      EXPECT_TRUE(hairs[h].periodic_u);
+      Eval tube(hairs[h].surface);
+      const auto f = field({root.u, root.v});
+      EXPECT_NEAR(norm3(std::vector<double>{f[3] - f[0], f[4] - f[1], f[5] - f[2]}), length, 1e-12);
+      for (double theta : {0.0, 0.125, 0.3125, 0.6875}) {  // dyadic: exact in both parameterizations
+        // s = 0: on the scalp at the root ellipse, about hair_radius from the hair's base.
+        const double phi = 2 * std::numbers::pi * theta - 0.75 * std::numbers::pi;
+        const auto on_scalp = surface({root.u + root.a * std::cos(phi), root.v + root.b * std::sin(phi)});
+        const auto ring = tube({theta, 0.0});
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(ring[k], on_scalp[k], 1e-14);
+        EXPECT_NEAR(norm3(std::vector<double>{ring[0] - f[0], ring[1] - f[1], ring[2] - f[2]}), r, 0.05 * r);
+        // s = 1: the tip.
+        const auto tip = tube({theta, 1.0});
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(tip[k], f[k + 3], 1e-14);
+        // The piece holding this part of the ring starts from it, bit for bit.
+        const int k = std::min(3, static_cast<int>(theta * 4));
+        const auto edge = Eval(pieces[4 * h + static_cast<std::size_t>(k)].surface)({theta * 4 - k, 0.0});
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(edge[c], ring[c]) << h << " " << theta;
+      }
     }
+}
+
+// A root that does not fit in its cell is refused, naming hair_radius.
+TEST(FurryBear, RootMustFitItsCell) {
+  const Model& m = find_model("furry_bear");
+  const std::string msg = error_of([&] { build_model(m, {{"hair_radius", 0.05}}); });
+  EXPECT_NE(msg.find("'hair_radius'"), std::string::npos) << msg;
 }
 
 // The tip of one hair moves with hair_length (along the same direction) and with kappa
@@ -163,8 +173,10 @@ TEST(FurryBear, HairsFollowHairLengthAndKappa) {
     const std::vector<ModelPatch> hairs = furry_bear_hairs(resolve_parameters(m, overrides));
     return at(hairs.at(k).surface, 0.0, 1.0);
   };
+  // The hair's base: its scalp point (the tube's ring lies around it).
   auto root = [&](std::size_t k) {
-    return at(furry_bear_hairs(resolve_parameters(m)).at(k).surface, 0.0, 0.0);
+    const HairRoot r = furry_bear_roots(resolve_parameters(m)).at(k);
+    return at(m.build(resolve_parameters(m)), r.u, r.v);
   };
   for (std::size_t k : {0u, 37u, 150u}) {
     const auto base = tip({}, k), longer = tip({{"hair_length", 0.2}}, k), straight = tip({{"kappa", 0.0}}, k);

@@ -61,7 +61,18 @@ struct EdgeSamples {
   EdgeRef edge;
   std::array<Point3, kSamples> at;
   bool finite = true;
+  double chord = 0.0;  // the largest distance between consecutive samples
 };
+
+// False when p is farther than two chords from every sample of a: then no point of a's curve
+// is near p, as long as the curve between consecutive samples stays within two chords of
+// them (locate assumes as much: it searches next to the nearest sample only). This skips the
+// golden-section search for edges that are far apart (hundreds of patches: the bear's hairs).
+bool may_lie_on(const EdgeSamples& a, const Point3& p, double eps) {
+  for (const Point3& q : a.at)
+    if (distance(q, p) <= 2.0 * a.chord + eps) return true;
+  return false;
+}
 
 Point3 eval_edge(const EdgeRef& e, double t, const std::vector<CompiledPatch>& compiled, PointEvaluator& ev) {
   const CompiledPatch& c = compiled[e.patch];
@@ -122,6 +133,7 @@ bool verified(const EdgeSamples& a, const EdgeSamples& b, double b_from, double 
 // samples lie on a at linearly mapped parameters.
 std::vector<Glue> match_part(const EdgeSamples& a, bool a_wraps, const EdgeSamples& b,
                              const std::vector<CompiledPatch>& compiled, double eps, PointEvaluator& ev) {
+  if (!may_lie_on(a, b.at[0], eps) || !may_lie_on(a, b.at[kSamples - 1], eps)) return {};
   const std::optional<double> start = locate(a, b.at[0], compiled, eps, ev);
   if (!start) return {};
   const std::optional<double> end = locate(a, b.at[kSamples - 1], compiled, eps, ev);
@@ -191,6 +203,7 @@ EdgeTopology find_edge_topology(const std::vector<SurfacePatch>& patches, const 
           if (std::isfinite(s[j])) lo[j] = std::min(lo[j], s[j]), hi[j] = std::max(hi[j], s[j]);
         }
       }
+      for (int k = 1; k < kSamples; ++k) e.chord = std::max(e.chord, distance(e.at[k - 1], e.at[k]));
       if (e.finite) edges.push_back(e);
     }
   if (edges.empty()) return topology;

@@ -78,6 +78,15 @@ struct NodeBounder {
     if (o.bound == LeafBound::Best && jacobian_ok && finite && !error && value_ev.continuous())
       r.bound = std::min(r.bound, std::sqrt(linear2) * kSlack);
     const bool refine = o.refine && o.refine(n.patch, u, v);
+    // A periodic axis closes into a loop, which needs at least three vertices to be a
+    // surface: a thin tube (a hair) within the tolerance with one or two leaves around would
+    // mesh as a flat double strip. Four leaves around at least (two splits).
+    const bool loop_u = p.periodic_u && n.rect.u1 - n.rect.u0 > kGridSize / 4;
+    const bool loop_v = p.periodic_v && n.rect.v1 - n.rect.v0 > kGridSize / 4;
+    if (loop_u || loop_v) {
+      r.verdict = loop_u ? Verdict::SplitU : Verdict::SplitV;
+      return r;
+    }
     if (r.bound <= o.tolerance && !refine) return r;
     // Split the direction along which the piece is longer (the parameter extent when the
     // Jacobian has no finite bound), within the depth limit.
@@ -96,7 +105,8 @@ struct NodeBounder {
 
 CompiledPatch compile_patch(const SurfacePatch& patch) {
   const Fn& s = patch.surface;
-  return CompiledPatch{Tape(s, kUv), Tape(cat({derivative(s, 0), derivative(s, 1)}), kUv), patch.u, patch.v};
+  return CompiledPatch{Tape(s, kUv), Tape(cat({derivative(s, 0), derivative(s, 1)}), kUv), patch.u, patch.v,
+                       patch.periodic_u, patch.periodic_v};
 }
 
 Subdivision subdivide(const std::vector<CompiledPatch>& patches, const AdaptiveMeshOptions& options) {

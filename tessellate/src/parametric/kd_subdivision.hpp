@@ -17,6 +17,7 @@ namespace genmod::parametric {
 struct CompiledPatch {
   Tape value, jacobian;
   Interval u, v;
+  bool periodic_u = false, periodic_v = false;
 };
 
 CompiledPatch compile_patch(const SurfacePatch& patch);

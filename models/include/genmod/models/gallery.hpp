@@ -71,6 +71,10 @@ struct Model {
   // the object is closed, each edge of a patch coincides geometrically with an edge of the
   // main surface or of another patch (a mesher glues them). Throws like `build`.
   std::function<std::vector<ModelPatch>(const ParameterValues&)> extra_patches;
+  // The extra patches tile the main surface themselves, changed (the bear's scalp in pieces
+  // with a hole at each hair root, where the hair's tube starts): model_patches leaves the
+  // main surface out, since meshing it too would overlap those pieces.
+  bool surface_in_extra_patches = false;
 };
 
 // All models, in a fixed order.
@@ -88,7 +92,8 @@ ParameterValues resolve_parameters(const std::string& model_name, const std::vec
 // model.build(resolve_parameters(model, overrides)).
 Fn build_model(const Model& model, const ParameterValues& overrides = {});
 // Every surface of the object, for meshers: the main surface (`surface`, built from `p` by
-// model.build, with the model's domain and periodic flags) first, then model.extra_patches(p);
+// model.build, with the model's domain and periodic flags) first unless the extra patches tile
+// it (Model::surface_in_extra_patches), then model.extra_patches(p);
 // for a solid, its six boundary faces (each a function of x(0), x(1); a pair of opposite
 // faces that coincide, as in a solid swept all the way around, is left out).
 // `p` is a complete parameter map (resolve_parameters).
@@ -151,12 +156,32 @@ Fn wing_cross(const ParameterValues& p);
 // The furry bear's hair field V(u, v) = (S, S + hair_length normalize(N + kappa S_v)) in R^6,
 // S the scalp (the model surface), N = S_u x S_v.
 Fn furry_bear_hair(const ParameterValues& p);
-// The bear's hairs as surfaces (the model's extra patches): hair_rows rows of 2 hair_rows
-// hairs each, rooted at u = (i + 1/2) / (2 hair_rows), v = (j + 1/2) / hair_rows; each a thin
-// closed tube of x(0) (around, periodic) and x(1) (root to tip) about the hair segment S ->
-// tip of furry_bear_hair, extended 2 hair_radius below the scalp: the axis from
-// S - 2 hair_radius d to the tip (d the hair's direction), radius
-// (27/4) hair_radius x(1) (1 - x(1))^2 (poles at both ends, hair_radius at x(1) = 1/3).
+// The bear's hair roots, one per cell [i, i + 1] / (2 R) x [j, j + 1] / R of the scalp's
+// parameter square (R = hair_rows, i < 2 R, j < R, row-major in j): the root circle is the
+// image of the ellipse (u + a cos phi, v + b sin phi) about the cell's centre (u, v), with
+// a = hair_radius / |S_u|, b = hair_radius / |S_v| at (u, v) (a circle of radius hair_radius
+// to first order: S_u is perpendicular to S_v on the profile product). Throws
+// std::invalid_argument naming hair_radius when an ellipse does not fit in a quarter of its cell.
+struct HairRoot {
+  double u, v, a, b;
+};
+std::vector<HairRoot> furry_bear_roots(const ParameterValues& p);
+// The scalp with a hole at each hair root, as the model meshes it (the extra patches, with
+// Model::surface_in_extra_patches): per root, the four pieces of its cell between the root
+// ellipse and the cell's sides (bottom, right, top, left), piece k of (t, r) being
+// S((1 - r) e(phi_k(t)) + r side_k(t)), e the root ellipse at phi_k(t) = 2 pi (k + t) / 4
+// - 3 pi / 4 and side_k(t) the cell's side from corner to corner, counterclockwise. The piece's
+// r = 0 edge is the quarter of the root ring that its hair's tube starts from, sample for sample.
+// The cells of the first and last rows start at v = 0.2 / R and end at 1 - 0.2 / R: the
+// list ends with the polar caps, the scalp over v in [0, 0.2 / R] and then [1 - 0.2 / R, 1],
+// one piece per column of cells (u in [i, i + 1] / (2 R)).
+std::vector<ModelPatch> furry_bear_scalp_pieces(const ParameterValues& p);
+// The bear's hairs as surfaces: one closed tube per root (furry_bear_roots order) of
+// (theta, s) = (x(0), x(1)), periodic in theta, from the root ring on the scalp (s = 0) to the
+// tip of furry_bear_hair at the cell's centre (s = 1, a pole):
+//   T(theta, s) = E(theta) + s hair_length d + ((1 - s)(1 + s) - 1) (E(theta) - S),
+// E(theta) = S(root ellipse at 2 pi theta - 3 pi / 4), S and d the hair's scalp point and
+// direction: the tube's cross section is the root ring scaled by 1 - s^2 about the axis.
 std::vector<ModelPatch> furry_bear_hairs(const ParameterValues& p);
 
 // Offset models of thesis 7.13-7.18 (offsets, offset_plate, spoon, key, screwdriver tips).
