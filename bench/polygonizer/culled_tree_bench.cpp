@@ -4,9 +4,12 @@
 //                            [--kernel bspline|wyvill|gaussian]
 //
 // The kernel is the cubic B-spline by default (compact support: the culled field culls the
-// gradient and Hessian tapes too). With the Gaussian only the value is culled; the mesher's
-// gradient and Hessian tapes, which dominate its cost, pay every segment, so culling gains
-// little (measured: about 1x at 100 segments).
+// gradient and Hessian tapes too). With the Gaussian the value and gradient are culled with
+// the tail bounds of culled_field_bounds.cpp, and the Hessian (the mesher's gradient mean
+// value form) too, as the segments have constant radii; the extra row culled-noH is the same
+// culled field with cull_second_derivatives = false (Hessian tape paying every segment, as
+// before that culling), timed as the culled mesher is, so its ratio is the Hessian culling's
+// gain.
 //
 // The skeleton is models::tree_segments(count) (binary branching, 35 degree turns, length 1
 // and radius 0.12 shrinking by 0.97 per generation). The solid is 1/2 - D < 0. For each count,
@@ -151,6 +154,9 @@ int main(int argc, char** argv) {
 
     const Fn culled_d = models::culled_convolution(segs, kernel), plain_d = models::summed_convolution(segs, kernel);
     const ImplicitSurface culled(density_to_implicit(culled_d));
+    const bool gaussian = kernel == Kernel::gaussian;
+    const ImplicitSurface culled_no_h(density_to_implicit(
+        gaussian ? culled_field(models::convolution_elements(segs, kernel), {.cull_second_derivatives = false}) : culled_d));
     // The plain sum's symbolic gradient and Hessian tapes grow with the count (at 10,000
     // segments they did not fit in 23 GB): above --plain-limit the plain mesher is skipped.
     const bool run_plain = n <= plain_limit;
@@ -162,6 +168,7 @@ int main(int argc, char** argv) {
     if (n <= culled_full_limit) {
       cf = run_mesher(culled, full, h, repeats);
       print(tag_full.c_str(), "culled", cf, cf.cpu);
+      if (gaussian) print(tag_full.c_str(), "culled-noH", run_mesher(culled_no_h, full, h, repeats), cf.cpu);
     }
     if (n <= full_limit) {
       const Row pf = run_mesher(plain, full, h, 1);
@@ -171,6 +178,7 @@ int main(int argc, char** argv) {
     }
     const Row cs = run_mesher(culled, sub, h, repeats);
     print(tag_sub.c_str(), "culled", cs, cs.cpu);
+    if (gaussian) print(tag_sub.c_str(), "culled-noH", run_mesher(culled_no_h, sub, h, repeats), cs.cpu);
     Row ps;
     if (run_plain) {
       ps = run_mesher(plain, sub, h, 1);

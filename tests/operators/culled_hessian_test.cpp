@@ -225,7 +225,9 @@ TEST_P(CulledFieldHessian, InclusionContainsThePlainSumsSecondDerivatives) {
     }
     EXPECT_GT(far_boxes, 20);
     // 0.3 or more from [-1, 1]^3 (7.5 radii): beyond every cull distance.
-    if (!tapered) EXPECT_EQ(pure, far_boxes);
+    if (!tapered) {
+      EXPECT_EQ(pure, far_boxes);
+    }
   }
 }
 

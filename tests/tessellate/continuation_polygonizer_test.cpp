@@ -370,7 +370,9 @@ TEST(ContinuationPolygonizer, OneAndTwoThreadsGiveBitwiseTheSameMesh) {
     EXPECT_EQ(a.stats.max_bracket, b.stats.max_bracket);
     EXPECT_EQ(a.stats.cubes, b.stats.cubes);
     EXPECT_EQ(a.stats.limits_hit, b.stats.limits_hit);
-    if (s.max_cubes == 10'000'000 && !s.bounds) EXPECT_GT(a.mesh.vertices.size(), 4096u * 2);
+    if (s.max_cubes == 10'000'000 && !s.bounds) {
+      EXPECT_GT(a.mesh.vertices.size(), 4096u * 2);
+    }
   }
   ContinuationSettings bad{.cube_size = 0.1, .starts = {{1.3, 0, 0}}};
   bad.threads = -1;
