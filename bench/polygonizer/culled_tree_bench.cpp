@@ -20,6 +20,9 @@
 //    the tape per cell);
 //  - plain: mesh_implicit on the plain sum of all segment convolutions (no culling; interval
 //    arithmetic cannot drop a term of a sum, so every evaluation pays every segment);
+//  - every (sub-box only, with --every): mesh_implicit on the same culled-field operator with
+//    every element declared Falloff::none, so that every box and point evaluates every
+//    element: the culled mesher without culling, without the plain sum's huge derivative tapes;
 //  - continuation: Bloomenthal's continuation polygonizer (tetrahedra) on the plain sum,
 //    from a start on the trunk (its point evaluations pay every segment either way).
 // Each is timed (process CPU time, one thread; the culled mesher the median of --repeats, the
@@ -113,6 +116,7 @@ int main(int argc, char** argv) {
   int repeats = 3, full_limit = 100, culled_full_limit = 1000;
   double sub_side = 1.5;
   int plain_limit = 1000;
+  bool every = false;
   Kernel kernel = Kernel::bspline;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -132,10 +136,12 @@ int main(int argc, char** argv) {
       plain_limit = std::atoi(argv[i + 1]);
     } else if (a == "--culled-full-limit") {
       culled_full_limit = std::atoi(argv[i + 1]);
+    } else if (a == "--every") {
+      every = std::atoi(argv[i + 1]) != 0;
     } else if (a == "--full-limit") {
       full_limit = std::atoi(argv[i + 1]);
     } else {
-      std::fprintf(stderr, "usage: %s [--counts 1000,10000] [--h 0.08] [--repeats N] [--full-limit N] [--culled-full-limit N] [--plain-limit N] [--sub-side S] [--kernel bspline|wyvill|gaussian]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--counts 1000,10000] [--h 0.08] [--repeats N] [--full-limit N] [--culled-full-limit N] [--plain-limit N] [--sub-side S] [--every 0|1] [--kernel bspline|wyvill|gaussian]\n", argv[0]);
       return 2;
     }
   }
@@ -185,6 +191,12 @@ int main(int argc, char** argv) {
       print(tag_sub.c_str(), "plain", ps, cs.cpu);
     } else {
       std::printf("%-16s %-13s skipped (count > --plain-limit %d)\n", tag_sub.c_str(), "plain", plain_limit);
+    }
+    if (every) {
+      std::vector<FieldElement> es = models::convolution_elements(segs, kernel);
+      for (FieldElement& e : es) e.falloff = Falloff::none;
+      const ImplicitSurface all(density_to_implicit(culled_field(es)));
+      print(tag_sub.c_str(), "every", run_mesher(all, sub, h, 1), cs.cpu);
     }
     const Row ks = run_continuation(plain_tape, sub, start, h, 1);
     print(tag_sub.c_str(), "continuation", ks, cs.cpu);
