@@ -1,5 +1,5 @@
 // The continuation and non-manifold polygonizers on 1 and 2 threads (issue 11):
-//   genmod_parallel_polygonizers_bench [--repeats N]
+//   genmod_parallel_polygonizers_bench [--repeats N] [--only NAME-PREFIX]
 // For each shape, the median wall and process CPU seconds of N runs (default 5) with
 // settings.threads = 1 and = 2, their ratios, and whether the two meshes are bitwise equal.
 // Shapes: the continuation on a torus (a cheap f) and on the plain sum of 100 Gaussian tree
@@ -83,22 +83,26 @@ void regions(const char* name, const std::vector<Fn>& r, NonmanifoldSettings s, 
 
 int main(int argc, char** argv) {
   int repeats = 5;
-  for (int i = 1; i + 1 < argc; i += 2)
+  std::string only;
+  for (int i = 1; i + 1 < argc; i += 2) {
     if (std::strcmp(argv[i], "--repeats") == 0) repeats = std::max(1, std::atoi(argv[i + 1]));
+    if (std::strcmp(argv[i], "--only") == 0) only = argv[i + 1];
+  }
+  const auto wanted = [&](const char* name) { return std::string(name).rfind(only, 0) == 0; };
   std::printf("1 vs 2 threads, median of %d runs; wall ratio = wall(1) / wall(2) (speed-up), cpu ratio = cpu(2) / cpu(1) (overhead)\n",
               repeats);
   std::printf("%-26s %9s %8s %8s %8s %8s %8s %8s  %s\n", "shape", "triangles", "wall_1", "wall_2", "cpu_1", "cpu_2", "wall", "cpu",
               "bitwise");
   const std::vector<models::ConvolutionSegment> segs = models::tree_segments(100);
   const Fn tree = density_to_implicit(models::summed_convolution(segs));
-  continuation("continuation torus", implicit_torus(1.0, 0.3), {.cube_size = 0.01, .starts = {{1.3, 0, 0}}}, repeats);
-  continuation("continuation tree-100", tree, {.cube_size = 0.04, .starts = {{0.12, 0, 0.5}}}, repeats);
-  regions("nonmanifold sphere-square", test::sphere_square(0.6, 1.0),
+  if (wanted("continuation torus")) continuation("continuation torus", implicit_torus(1.0, 0.3), {.cube_size = 0.01, .starts = {{1.3, 0, 0}}}, repeats);
+  if (wanted("continuation tree-100")) continuation("continuation tree-100", tree, {.cube_size = 0.04, .starts = {{0.12, 0, 0.5}}}, repeats);
+  if (wanted("nonmanifold sphere-square")) regions("nonmanifold sphere-square", test::sphere_square(0.6, 1.0),
           {.cube_size = 0.03, .bounds = {Interval(-1.23, 1.23), Interval(-1.23, 1.23), Interval(-1.23, 1.23)},
            .interest = {{0, 2}, {0, 3}, {2, 3}}},
           repeats);
   const models::SegmentBounds b = models::segment_bounds(segs, 3.0);
-  regions("nonmanifold tree-100", {tree, -tree},
+  if (wanted("nonmanifold tree-100")) regions("nonmanifold tree-100", {tree, -tree},
           {.cube_size = 0.1, .bounds = {Interval(b.lo[0], b.hi[0]), Interval(b.lo[1], b.hi[1]), Interval(b.lo[2], b.hi[2])}},
           repeats);
   return 0;
