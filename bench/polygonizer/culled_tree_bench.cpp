@@ -4,9 +4,12 @@
 //                            [--kernel bspline|wyvill|gaussian]
 //
 // The kernel is the cubic B-spline by default (compact support: the culled field culls the
-// gradient and Hessian tapes too). With the Gaussian only the value is culled; the mesher's
-// gradient and Hessian tapes, which dominate its cost, pay every segment, so culling gains
-// little (measured: about 1x at 100 segments).
+// gradient and Hessian tapes too). With the Gaussian the value and gradient are culled with
+// the tail bounds of culled_field_bounds.cpp, and the Hessian (the mesher's gradient mean
+// value form) too, as the segments have constant radii; the extra row culled-noH is the same
+// culled field with cull_second_derivatives = false (Hessian tape paying every segment, as
+// before that culling), timed as the culled mesher is, so its ratio is the Hessian culling's
+// gain.
 //
 // The skeleton is models::tree_segments(count) (binary branching, 35 degree turns, length 1
 // and radius 0.12 shrinking by 0.97 per generation). The solid is 1/2 - D < 0. For each count,
@@ -17,6 +20,9 @@
 //    the tape per cell);
 //  - plain: mesh_implicit on the plain sum of all segment convolutions (no culling; interval
 //    arithmetic cannot drop a term of a sum, so every evaluation pays every segment);
+//  - every (sub-box only, with --every): mesh_implicit on the same culled-field operator with
+//    every element declared Falloff::none, so that every box and point evaluates every
+//    element: the culled mesher without culling, without the plain sum's huge derivative tapes;
 //  - continuation: Bloomenthal's continuation polygonizer (tetrahedra) on the plain sum,
 //    from a start on the trunk (its point evaluations pay every segment either way).
 // Each is timed (process CPU time, one thread; the culled mesher the median of --repeats, the
@@ -110,6 +116,7 @@ int main(int argc, char** argv) {
   int repeats = 3, full_limit = 100, culled_full_limit = 1000;
   double sub_side = 1.5;
   int plain_limit = 1000;
+  bool every = false;
   Kernel kernel = Kernel::bspline;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string a = argv[i];
@@ -129,10 +136,12 @@ int main(int argc, char** argv) {
       plain_limit = std::atoi(argv[i + 1]);
     } else if (a == "--culled-full-limit") {
       culled_full_limit = std::atoi(argv[i + 1]);
+    } else if (a == "--every") {
+      every = std::atoi(argv[i + 1]) != 0;
     } else if (a == "--full-limit") {
       full_limit = std::atoi(argv[i + 1]);
     } else {
-      std::fprintf(stderr, "usage: %s [--counts 1000,10000] [--h 0.08] [--repeats N] [--full-limit N] [--culled-full-limit N] [--plain-limit N] [--sub-side S] [--kernel bspline|wyvill|gaussian]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [--counts 1000,10000] [--h 0.08] [--repeats N] [--full-limit N] [--culled-full-limit N] [--plain-limit N] [--sub-side S] [--every 0|1] [--kernel bspline|wyvill|gaussian]\n", argv[0]);
       return 2;
     }
   }
@@ -151,6 +160,9 @@ int main(int argc, char** argv) {
 
     const Fn culled_d = models::culled_convolution(segs, kernel), plain_d = models::summed_convolution(segs, kernel);
     const ImplicitSurface culled(density_to_implicit(culled_d));
+    const bool gaussian = kernel == Kernel::gaussian;
+    const ImplicitSurface culled_no_h(density_to_implicit(
+        gaussian ? culled_field(models::convolution_elements(segs, kernel), {.cull_second_derivatives = false}) : culled_d));
     // The plain sum's symbolic gradient and Hessian tapes grow with the count (at 10,000
     // segments they did not fit in 23 GB): above --plain-limit the plain mesher is skipped.
     const bool run_plain = n <= plain_limit;
@@ -162,6 +174,7 @@ int main(int argc, char** argv) {
     if (n <= culled_full_limit) {
       cf = run_mesher(culled, full, h, repeats);
       print(tag_full.c_str(), "culled", cf, cf.cpu);
+      if (gaussian) print(tag_full.c_str(), "culled-noH", run_mesher(culled_no_h, full, h, repeats), cf.cpu);
     }
     if (n <= full_limit) {
       const Row pf = run_mesher(plain, full, h, 1);
@@ -171,12 +184,19 @@ int main(int argc, char** argv) {
     }
     const Row cs = run_mesher(culled, sub, h, repeats);
     print(tag_sub.c_str(), "culled", cs, cs.cpu);
+    if (gaussian) print(tag_sub.c_str(), "culled-noH", run_mesher(culled_no_h, sub, h, repeats), cs.cpu);
     Row ps;
     if (run_plain) {
       ps = run_mesher(plain, sub, h, 1);
       print(tag_sub.c_str(), "plain", ps, cs.cpu);
     } else {
       std::printf("%-16s %-13s skipped (count > --plain-limit %d)\n", tag_sub.c_str(), "plain", plain_limit);
+    }
+    if (every) {
+      std::vector<FieldElement> es = models::convolution_elements(segs, kernel);
+      for (FieldElement& e : es) e.falloff = Falloff::none;
+      const ImplicitSurface all(density_to_implicit(culled_field(es)));
+      print(tag_sub.c_str(), "every", run_mesher(all, sub, h, 1), cs.cpu);
     }
     const Row ks = run_continuation(plain_tape, sub, start, h, 1);
     print(tag_sub.c_str(), "continuation", ks, cs.cpu);

@@ -35,6 +35,7 @@ const int kXyz[3] = {0, 1, 2};
 enum class Cull {
   value,     // a Gaussian density: [0, weight Gauss(delta / radius)]
   gradient,  // a first derivative of a Gaussian convolution: [-B, B] (culled_field_bounds)
+  hessian,   // a second derivative of a constant-radius one: [-C, C] (culled_field_bounds)
   compact,   // zero beyond its support: [0, 0]
   never,
 };
@@ -44,6 +45,7 @@ Cull cull_kind(const FieldElement& e, int order) {
   if (e.falloff == Falloff::none) return Cull::never;
   if (order == 0) return Cull::value;
   if (order == 1 && e.taper >= 0) return Cull::gradient;
+  if (order == 2 && e.taper == 0) return Cull::hessian;
   return Cull::never;
 }
 
@@ -53,6 +55,7 @@ double cull_distance2(const FieldElement& e, Cull kind, double cull_below) {
     case Cull::compact: return e.radius * e.radius * (1 + 1e-9);
     case Cull::never: return kInf;
     case Cull::gradient: return detail::gaussian_gradient_cull_distance2(e.weight, e.radius, e.taper, cull_below);
+    case Cull::hessian: return detail::gaussian_hessian_cull_distance2(e.weight, e.radius, cull_below);
     case Cull::value: break;
   }
   if (!(cull_below > 0)) return kInf;
@@ -72,7 +75,8 @@ class CulledFieldOp final : public CustomOp {
     for (std::size_t k = 0; k < elements_.size(); ++k) {
       const FieldElement& e = elements_[k];
       tapes_.emplace_back(e.density, std::span<const int>(kXyz, 3));
-      const Cull kind = cull_kind(e, order_);
+      Cull kind = cull_kind(e, order_);
+      if (kind == Cull::hessian && !options_.cull_second_derivatives) kind = Cull::never;
       const double d2 = cull_distance2(e, kind, options_.cull_below);
       if (!std::isfinite(d2)) {
         always_.push_back(static_cast<std::uint32_t>(k));
@@ -82,7 +86,7 @@ class CulledFieldOp final : public CustomOp {
       it.index = static_cast<std::uint32_t>(k);
       for (int i = 0; i < 3; ++i) it.lo[i] = std::min(e.a[i], e.b[i]), it.hi[i] = std::max(e.a[i], e.b[i]);
       it.cull2 = d2;
-      it.remainder = kind == Cull::value || kind == Cull::gradient;
+      it.remainder = kind == Cull::value || kind == Cull::gradient || kind == Cull::hessian;
       it.weight = e.weight;
       it.radius = e.radius;
       it.taper = kind == Cull::gradient ? e.taper : 0.0;
@@ -214,9 +218,7 @@ class CulledFieldOp final : public CustomOp {
   // cull_below (each was culled individually or with the subtree, beyond its own cull
   // distance), or the subtree's bound at d2 where that is smaller.
   double per_element_bound(const detail::BvhNode& n, double d2) const {
-    const double b = order_ == 0 ? detail::gaussian_value_above(n.weight, n.radius, d2)
-                                 : detail::gaussian_gradient_above(n.weight, n.radius, n.taper, d2);
-    return std::min(options_.cull_below, b);
+    return std::min(options_.cull_below, detail::gaussian_order_above(order_, n.weight, n.radius, n.taper, d2));
   }
 
   std::vector<FieldElement> elements_;
@@ -278,12 +280,13 @@ double culled_element_bound(const FieldElement& e, std::span<const Interval> box
   return detail::gaussian_value_above(e.weight, e.radius, d2);
 }
 
-double culled_derivative_bound(const FieldElement& e, std::span<const Interval> box) {
-  const Cull kind = cull_kind(e, 1);
+double culled_derivative_bound(const FieldElement& e, std::span<const Interval> box, int order) {
+  if (order != 1 && order != 2) throw std::invalid_argument("culled_derivative_bound: order must be 1 or 2");
+  const Cull kind = cull_kind(e, order);
   if (kind == Cull::never) return kInf;
   const double d2 = skeleton_distance2_below(e, box);
   if (kind == Cull::compact) return d2 >= e.radius * e.radius * (1 + 1e-12) ? 0.0 : kInf;
-  return detail::gaussian_gradient_above(e.weight, e.radius, e.taper, d2);
+  return detail::gaussian_order_above(order, e.weight, e.radius, e.taper, d2);
 }
 
 Fn culled_field(const std::vector<FieldElement>& elements, const CulledFieldOptions& options, const Fn& p) {

@@ -4,15 +4,6 @@
 #include "culled_field_bounds.hpp"
 
 namespace genmod::detail {
-namespace {
-
-// The bound of one Gaussian item (or of each item of a subtree) at squared distance >= d2.
-double bound(int order, double weight, double radius, double taper, double d2) {
-  return order == 0 ? gaussian_value_above(weight, radius, d2) : gaussian_gradient_above(weight, radius, taper, d2);
-}
-
-}  // namespace
-
 void near_point(const ElementBvh* bvh, std::span<const BvhItem> linear, int order, std::span<const Interval> point, double t, PointNear& out) {
   out.indices.clear();
   // The skipped bounds are non-negative and summed in double arithmetic: `terms` products and
@@ -21,7 +12,7 @@ void near_point(const ElementBvh* bvh, std::span<const BvhItem> linear, int orde
   double remainder = 0, terms = 1;
   auto skip_item = [&](const BvhItem& it, double d2) {
     if (!it.remainder) return d2 >= it.cull2;  // compact: exactly 0 beyond its support
-    const double b = bound(order, it.weight, it.radius, it.taper, d2);
+    const double b = gaussian_order_above(order, it.weight, it.radius, it.taper, d2);
     if (!(b <= t)) return false;
     remainder += b, terms += 1;
     return true;
@@ -33,7 +24,7 @@ void near_point(const ElementBvh* bvh, std::span<const BvhItem> linear, int orde
         [&](const BvhNode& n, double d2) {
           if (d2 < n.compact2) return false;
           if (n.remainders == 0) return true;
-          const double b = bound(order, n.weight, n.radius, n.taper, d2);
+          const double b = gaussian_order_above(order, n.weight, n.radius, n.taper, d2);
           if (!(b <= t)) return false;
           remainder += static_cast<double>(n.remainders) * b, terms += 2;
           return true;

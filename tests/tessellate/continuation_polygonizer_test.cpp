@@ -346,6 +346,39 @@ TEST(ContinuationPolygonizer, SameInputGivesBitwiseTheSameMesh) {
   }
 }
 
+// The vertices are placed in parallel (in rounds of 4096 and chunks fixed by the vertex
+// numbers): one and two threads give bitwise the same mesh, normals and statistics, for both
+// decompositions, several rounds (over 4096 vertices), and walks cut by limits.
+TEST(ContinuationPolygonizer, OneAndTwoThreadsGiveBitwiseTheSameMesh) {
+  std::vector<ContinuationSettings> cases;
+  for (CellDecomposition d : kBoth) cases.push_back({.cube_size = 0.02, .starts = {{1.3, 0, 0}}, .decomposition = d});
+  cases.push_back({.cube_size = 0.03, .starts = {{1.3, 0, 0}}, .max_cubes = 777});
+  cases.push_back({.cube_size = 0.03, .starts = {{1.3, 0, 0}}, .bounds = Box3{Interval(0, 2), Interval(-2, 2), Interval(-2, 2)}});
+  for (ContinuationSettings s : cases) {
+    s.threads = 1;
+    const ContinuationMesh a = polygonize_continuation(torus(), s);
+    s.threads = 2;
+    const ContinuationMesh b = polygonize_continuation(torus(), s);
+    ASSERT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
+    EXPECT_EQ(std::memcmp(a.mesh.vertices.data(), b.mesh.vertices.data(), a.mesh.vertices.size() * sizeof(a.mesh.vertices[0])), 0);
+    EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+    ASSERT_EQ(a.normals.size(), b.normals.size());
+    EXPECT_EQ(std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(a.normals[0])), 0);
+    EXPECT_EQ(a.stats.corner_evaluations, b.stats.corner_evaluations);
+    EXPECT_EQ(a.stats.bisection_evaluations, b.stats.bisection_evaluations);
+    EXPECT_EQ(a.stats.normal_evaluations, b.stats.normal_evaluations);
+    EXPECT_EQ(a.stats.max_bracket, b.stats.max_bracket);
+    EXPECT_EQ(a.stats.cubes, b.stats.cubes);
+    EXPECT_EQ(a.stats.limits_hit, b.stats.limits_hit);
+    if (s.max_cubes == 10'000'000 && !s.bounds) {
+      EXPECT_GT(a.mesh.vertices.size(), 4096u * 2);
+    }
+  }
+  ContinuationSettings bad{.cube_size = 0.1, .starts = {{1.3, 0, 0}}};
+  bad.threads = -1;
+  EXPECT_THROW(polygonize_continuation(torus(), bad), std::invalid_argument);
+}
+
 TEST(ContinuationPolygonizer, CubeLimitIsReported) {
   const ContinuationMesh m = polygonize_continuation(sphere(1.0), {.cube_size = 0.05, .starts = {{1, 0, 0}}, .max_cubes = 100});
   EXPECT_EQ(m.stats.cubes, 100u);

@@ -509,6 +509,39 @@ TEST(NonmanifoldPolygonizer, SameInputGivesBitwiseTheSameMesh) {
   EXPECT_EQ(a.stats.evaluations(), b.stats.evaluations());
 }
 
+// The corner scan and the edge vertices run in parallel: one and two threads give bitwise the
+// same mesh, regions, vertex kinds and statistics (junctions, a cube limit, a cut by the bounds).
+TEST(NonmanifoldPolygonizer, OneAndTwoThreadsGiveBitwiseTheSameMesh) {
+  struct Case {
+    std::vector<Fn> regions;
+    NonmanifoldSettings s;
+  };
+  std::vector<Case> cases;
+  cases.push_back({sphere_square(0.6, 1.0), {.cube_size = 0.07, .bounds = cube_box(1.23), .interest = {{0, 2}, {0, 3}, {2, 3}}}});
+  cases.push_back({sphere_regions(1.0), {.cube_size = 0.05, .bounds = cube_box(1.23), .max_cubes = 1000}});
+  cases.push_back({sphere_regions(1.0), {.cube_size = 0.05, .bounds = {Interval(0.03, 1.23), Interval(-1.23, 1.23), Interval(-1.23, 1.23)}}});
+  for (Case& c : cases) {
+    c.s.threads = 1;
+    const RegionMesh a = polygonize_regions(c.regions, c.s);
+    c.s.threads = 2;
+    const RegionMesh b = polygonize_regions(c.regions, c.s);
+    ASSERT_EQ(a.mesh.vertices.size(), b.mesh.vertices.size());
+    EXPECT_GT(a.mesh.triangles.size(), 1000u);
+    EXPECT_EQ(std::memcmp(a.mesh.vertices.data(), b.mesh.vertices.data(), a.mesh.vertices.size() * sizeof(Point)), 0);
+    EXPECT_EQ(a.mesh.triangles, b.mesh.triangles);
+    EXPECT_EQ(a.regions, b.regions);
+    EXPECT_EQ(a.vertex_kinds, b.vertex_kinds);
+    EXPECT_EQ(a.stats.corner_evaluations, b.stats.corner_evaluations);
+    EXPECT_EQ(a.stats.sample_evaluations, b.stats.sample_evaluations);
+    EXPECT_EQ(a.stats.refine_evaluations, b.stats.refine_evaluations);
+    EXPECT_EQ(a.stats.face_evaluations, b.stats.face_evaluations);
+    EXPECT_EQ(a.stats.crossing_tetrahedron_edge_evaluations, b.stats.crossing_tetrahedron_edge_evaluations);
+    EXPECT_EQ(a.stats.cubes, b.stats.cubes);
+    EXPECT_EQ(a.stats.face_vertices, b.stats.face_vertices);
+    EXPECT_EQ(a.stats.limits_hit, b.stats.limits_hit);
+  }
+}
+
 TEST(NonmanifoldPolygonizer, LimitsAreReported) {
   const RegionMesh few = polygonize_regions(sphere_regions(1.0), {.cube_size = 0.1, .bounds = cube_box(1.23), .max_cubes = 5});
   EXPECT_EQ(few.stats.cubes, 5u);

@@ -1,8 +1,20 @@
 // polygonize_continuation: the cube walk, the corner and vertex caches and the bisection of
 // lattice edges (the method is described in continuation_polygonizer.hpp).
+//
+// Threads. The walk (which cubes, triangles and vertex numbers) depends only on the corners'
+// sides, so it runs on one thread; a vertex's position and normal depend only on its lattice
+// edge. So the walk numbers each new vertex and records its edge, and every kPlaceEvery new
+// vertices (and at the end) they are placed together: bisection and normals in chunks of
+// kPlaceChunk vertices, the chunks spread over the threads. The chunks are fixed by the
+// vertex numbers alone, so each point is evaluated in the same batch whatever the thread
+// count, and the mesh is bitwise the same. Bisection and normals are ~95% of the evaluations.
 #include "genmod/kernel/batch_evaluator.hpp"
 #include "genmod/tessellate/continuation_polygonizer.hpp"
 #include "continuation/seed_search.hpp"
+#include "thread_arena.hpp"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,6 +37,11 @@ using Cell = std::array<std::int64_t, 3>;
 // offsets in {-1, 0, 1}^3 whose first non-zero component is positive) in the low 4 bits.
 constexpr std::int64_t kOffset = std::int64_t{1} << 19;
 constexpr std::int64_t kMaxCoordinate = kOffset - 2;  // a cube's far corner stays in range
+
+// Vertices placed per round (bounds the memory of unplaced edges and the delay of a stop
+// request), and per chunk of a round (one batch evaluation per halving).
+constexpr std::size_t kPlaceEvery = 4096;
+constexpr std::size_t kPlaceChunk = 16;
 
 std::uint64_t corner_key(std::int64_t i, std::int64_t j, std::int64_t k) {
   return (static_cast<std::uint64_t>(i + kOffset) << 40) | (static_cast<std::uint64_t>(j + kOffset) << 20) |
@@ -85,7 +102,7 @@ void check_tape(const Tape& f) {
 
 class Polygonizer {
  public:
-  Polygonizer(const Tape& f, const ContinuationSettings& s) : s_(s), eval_(f) {}
+  Polygonizer(const Tape& f, const ContinuationSettings& s) : s_(s), eval_(f), workers_([&f] { return Evaluator(f); }) {}
 
   ContinuationMesh run() {
     const double radius = s_.search_radius > 0.0 ? s_.search_radius : 16.0 * s_.cube_size;
@@ -113,6 +130,7 @@ class Polygonizer {
         polygonize(c);
       }
     }
+    place();
     out_.stats.cubes = visited_.size();
     const char* names[4] = {"cubes", "bounds", "lattice", "cancelled"};
     for (int k = 0; k < 4; ++k)
@@ -277,56 +295,71 @@ class Polygonizer {
     }
   }
 
-  // Bisects the pending edges together (one batch evaluation per halving) and creates their
-  // vertices in the order they were first needed.
+  // Numbers the pending edges' vertices in the order they were first needed; place() computes
+  // their positions (and normals) later, in parallel.
   void bisect(const Cell& cube, std::int64_t* local) {
-    const std::size_t n = pending_.size();
-    in_.resize(n);
-    outp_.resize(n);
-    for (std::size_t e = 0; e < n; ++e) {
-      in_[e] = corner_point(corner_of(cube, pending_[e] / 8));
-      outp_[e] = corner_point(corner_of(cube, pending_[e] % 8));
-    }
-    const std::size_t before = eval_.count;
-    mid_.resize(n);
-    for (int step = 0; step < s_.bisections; ++step) {
-      for (std::size_t e = 0; e < n; ++e)
-        for (int k = 0; k < 3; ++k) mid_[e][k] = 0.5 * (in_[e][k] + outp_[e][k]);
-      const std::span<const double> v = eval_.eval(mid_);
-      for (std::size_t e = 0; e < n; ++e) (is_inside(v[e]) ? in_[e] : outp_[e]) = mid_[e];
-    }
-    out_.stats.bisection_evaluations += eval_.count - before;
-    for (std::size_t e = 0; e < n; ++e) {
-      Point p;
-      for (int k = 0; k < 3; ++k) p[k] = 0.5 * (in_[e][k] + outp_[e][k]);
-      out_.stats.max_bracket =
-          std::max(out_.stats.max_bracket, std::hypot(outp_[e][0] - in_[e][0], outp_[e][1] - in_[e][1], outp_[e][2] - in_[e][2]));
+    for (const int slot : pending_) {
       const auto id = static_cast<std::int64_t>(out_.mesh.vertices.size());
-      out_.mesh.vertices.push_back(p);
-      local[pending_[e]] = id;
-      vertex_cache_.emplace(edge_key(corner_of(cube, pending_[e] / 8), corner_of(cube, pending_[e] % 8)),
-                            static_cast<std::uint32_t>(id));
-      mid_[e] = p;
+      out_.mesh.vertices.push_back({0.0, 0.0, 0.0});
+      if (s_.normals) out_.normals.push_back({0.0, 0.0, 0.0});
+      unplaced_.push_back({corner_point(corner_of(cube, slot / 8)), corner_point(corner_of(cube, slot % 8))});
+      local[slot] = id;
+      vertex_cache_.emplace(edge_key(corner_of(cube, slot / 8), corner_of(cube, slot % 8)), static_cast<std::uint32_t>(id));
     }
-    if (s_.normals) normals(n);
+    if (unplaced_.size() >= kPlaceEvery) place();
   }
 
-  // Forward differences at the new vertices (in mid_[0..n)), step cube_size / 100.
-  void normals(std::size_t n) {
+  // Places the vertices numbered since the last round: the last unplaced_.size() vertices.
+  void place() {
+    const std::size_t n = unplaced_.size();
+    if (n == 0) return;
+    const std::size_t first = out_.mesh.vertices.size() - n, chunks = (n + kPlaceChunk - 1) / kPlaceChunk;
+    brackets_.assign(chunks, 0.0);
+    tbb::parallel_for(std::size_t{0}, chunks, [&](std::size_t c) {
+      const std::size_t b = c * kPlaceChunk, e = std::min(n, b + kPlaceChunk);
+      brackets_[c] = place_chunk(workers_.local(), first, b, e);
+    });
+    for (double b : brackets_) out_.stats.max_bracket = std::max(out_.stats.max_bracket, b);
+    out_.stats.bisection_evaluations += n * static_cast<std::size_t>(s_.bisections);
+    if (s_.normals) out_.stats.normal_evaluations += 4 * n;
+    unplaced_.clear();
+  }
+
+  // Bisects the edges unplaced_[b, e) together (one batch evaluation per halving), writes
+  // their vertices (numbers first + b ...) and normals; returns the longest final bracket.
+  double place_chunk(Evaluator& f, std::size_t first, std::size_t b, std::size_t e) {
+    const std::size_t n = e - b;
+    std::array<Point, kPlaceChunk> in, out, mid;
+    for (std::size_t i = 0; i < n; ++i) in[i] = unplaced_[b + i][0], out[i] = unplaced_[b + i][1];
+    for (int step = 0; step < s_.bisections; ++step) {
+      for (std::size_t i = 0; i < n; ++i)
+        for (int k = 0; k < 3; ++k) mid[i][k] = 0.5 * (in[i][k] + out[i][k]);
+      const std::span<const double> v = f.eval(std::span<const Point>(mid.data(), n));
+      for (std::size_t i = 0; i < n; ++i) (is_inside(v[i]) ? in[i] : out[i]) = mid[i];
+    }
+    double bracket = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+      for (int k = 0; k < 3; ++k) mid[i][k] = 0.5 * (in[i][k] + out[i][k]);
+      bracket = std::max(bracket, std::hypot(out[i][0] - in[i][0], out[i][1] - in[i][1], out[i][2] - in[i][2]));
+      out_.mesh.vertices[first + b + i] = mid[i];  // distinct elements per chunk: no race
+    }
+    if (s_.normals) normals(f, std::span<const Point>(mid.data(), n), first + b);
+    return bracket;
+  }
+
+  // Forward differences at the vertices p (numbers first, first + 1, ...), step cube_size / 100.
+  void normals(Evaluator& f, std::span<const Point> p, std::size_t first) {
     const double delta = 0.01 * s_.cube_size;
-    std::vector<Point>& probes = probes_;
-    probes.resize(4 * n);
-    for (std::size_t e = 0; e < n; ++e) {
-      probes[4 * e] = mid_[e];
+    std::array<Point, 4 * kPlaceChunk> probes;
+    for (std::size_t e = 0; e < p.size(); ++e) {
+      probes[4 * e] = p[e];
       for (int k = 0; k < 3; ++k) {
-        probes[4 * e + 1 + k] = mid_[e];
+        probes[4 * e + 1 + k] = p[e];
         probes[4 * e + 1 + k][k] += delta;
       }
     }
-    const std::size_t before = eval_.count;
-    const std::span<const double> v = eval_.eval(probes);
-    out_.stats.normal_evaluations += eval_.count - before;
-    for (std::size_t e = 0; e < n; ++e) {
+    const std::span<const double> v = f.eval(std::span<const Point>(probes.data(), 4 * p.size()));
+    for (std::size_t e = 0; e < p.size(); ++e) {
       Point g{v[4 * e + 1] - v[4 * e], v[4 * e + 2] - v[4 * e], v[4 * e + 3] - v[4 * e]};
       const double len = std::hypot(g[0], g[1], g[2]);
       if (len > 0.0 && std::isfinite(len)) {
@@ -334,7 +367,7 @@ class Polygonizer {
       } else {
         g = {0.0, 0.0, 0.0};
       }
-      out_.normals.push_back(g);
+      out_.normals[first + e] = g;
     }
   }
 
@@ -355,7 +388,8 @@ class Polygonizer {
   }
 
   const ContinuationSettings& s_;
-  Evaluator eval_;
+  Evaluator eval_;  // the walk's (seed search and corners)
+  tbb::enumerable_thread_specific<Evaluator> workers_;  // place()'s, one per thread
   Point origin_{};
   std::unordered_map<std::uint64_t, double> corner_cache_;
   std::unordered_map<std::uint64_t, std::uint32_t> vertex_cache_;
@@ -367,7 +401,8 @@ class Polygonizer {
   std::array<Point, 8> points_{};
   std::vector<CaseTriangle> triangles_;
   std::vector<int> pending_;
-  std::vector<Point> in_, outp_, mid_, probes_;
+  std::vector<std::array<Point, 2>> unplaced_;  // (inside, outside) corner of each vertex's edge
+  std::vector<double> brackets_;                 // per chunk of a round
 };
 
 }  // namespace
@@ -375,7 +410,9 @@ class Polygonizer {
 ContinuationMesh polygonize_continuation(const Tape& f, const ContinuationSettings& settings) {
   check_tape(f);
   check_settings(settings);
-  return Polygonizer(f, settings).run();
+  ContinuationMesh m;
+  raster_detail::run_with_threads(settings.threads, "polygonize_continuation", [&] { m = Polygonizer(f, settings).run(); });
+  return m;
 }
 
 ContinuationMesh polygonize_continuation(const Fn& f, const ContinuationSettings& settings) {

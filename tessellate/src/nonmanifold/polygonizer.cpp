@@ -6,13 +6,19 @@
 #include "nonmanifold/lattice_simplex.hpp"
 #include "nonmanifold/post_process.hpp"
 #include "nonmanifold/region_evaluator.hpp"
+#include "thread_arena.hpp"
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <deque>
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace genmod {
 
@@ -130,7 +136,7 @@ void check_regions(std::span<const Fn> regions) {
 class Polygonizer {
  public:
   Polygonizer(std::span<const Fn> regions, const NonmanifoldSettings& s)
-      : s_(s), f_(regions), k_(static_cast<int>(regions.size())) {
+      : s_(s), f_(regions), k_(static_cast<int>(regions.size())), workers_([this] { return f_.worker(); }) {
     interest_.assign(static_cast<std::size_t>(k_ * k_), s.interest.empty());
     for (const auto& [a, b] : s.interest) interest_[a * k_ + b] = interest_[b * k_ + a] = true;
     double corners = 1.0;
@@ -171,8 +177,10 @@ class Polygonizer {
         queue_.clear();
         break;
       }
+      if (prepared_front_ == 0) prepare_edges();
       const Coord c = queue_.front();
       queue_.pop_front();
+      --prepared_front_;
       polygonize(c);
     }
     if (limit_cubes_) out_.stats.limits_hit.emplace_back("cubes");
@@ -184,6 +192,9 @@ class Polygonizer {
   }
 
  private:
+  static constexpr std::uint64_t kScanChunk = 4096;     // corners per batch of the scan
+  static constexpr std::size_t kPrepareCubes = 256;      // queued cubes whose edges are computed ahead
+
   // Lattice.
   std::uint64_t key(const Coord& c) const {
     return static_cast<std::uint64_t>((c[0] * (n_[1] + 1) + c[1]) * (n_[2] + 1) + c[2]);
@@ -196,31 +207,30 @@ class Polygonizer {
   int corner_region(const Coord& c) const { return corner_regions_[key(c)]; }
   bool interesting(int a, int b) const { return interest_[a * k_ + b]; }
 
+  // f_reg at every lattice corner, in chunks of kScanChunk corners in key order (a corner's
+  // key is its position in the i, j, k loops), the chunks spread over the threads: each corner
+  // is evaluated in the same batch whatever the thread count.
   void scan_corners() {
     corner_regions_.resize(corner_count_);
-    std::vector<Point> batch;
-    std::vector<std::uint64_t> keys;
-    const auto flush = [&] {
-      const std::span<const int> r = f_.regions(batch);
-      for (std::size_t p = 0; p < batch.size(); ++p) corner_regions_[keys[p]] = r[p];
-      batch.clear();
-      keys.clear();
-    };
-    for (std::int64_t i = 0; i <= n_[0]; ++i) {
-      if (stop_requested()) {  // run() returns at once: no corner is used
-        cancelled_ = true;
+    const std::uint64_t chunks = (corner_count_ + kScanChunk - 1) / kScanChunk;
+    std::atomic<bool> stopped{false};
+    tbb::parallel_for(std::uint64_t{0}, chunks, [&](std::uint64_t c) {
+      if (stopped.load(std::memory_order_relaxed) || stop_requested()) {
+        stopped = true;  // run() returns at once: no corner is used
         return;
       }
-      for (std::int64_t j = 0; j <= n_[1]; ++j)
-        for (std::int64_t k = 0; k <= n_[2]; ++k) {
-          const Coord c{i, j, k};
-          batch.push_back(position(c));
-          keys.push_back(key(c));
-          if (batch.size() == 4096) flush();
-        }
-    }
-    if (!batch.empty()) flush();
-    out_.stats.corner_evaluations = f_.count;
+      const std::uint64_t begin = c * kScanChunk, end = std::min(corner_count_, begin + kScanChunk);
+      std::vector<Point> batch;
+      batch.reserve(static_cast<std::size_t>(end - begin));
+      const auto nj = static_cast<std::uint64_t>(n_[1] + 1), nk = static_cast<std::uint64_t>(n_[2] + 1);
+      for (std::uint64_t key = begin; key < end; ++key)
+        batch.push_back(position({static_cast<std::int64_t>(key / (nj * nk)), static_cast<std::int64_t>(key / nk % nj),
+                                  static_cast<std::int64_t>(key % nk)}));
+      const std::span<const int> r = workers_.local().regions(batch);
+      std::copy(r.begin(), r.end(), corner_regions_.begin() + static_cast<std::ptrdiff_t>(begin));
+    });
+    cancelled_ = stopped.load();
+    if (!cancelled_) out_.stats.corner_evaluations = corner_count_;
   }
 
   void enqueue(const Coord& c) {
@@ -241,11 +251,23 @@ class Polygonizer {
     return static_cast<int>(candidates_.size() - 1);
   }
 
-  void refine(EdgeRecord& edge, const Candidate& proto, const Point& x0, int r0, const Point& x1, int r1, int depth) {
+  // One lattice edge's crossings, computed apart from the walk (a pure function of the edge:
+  // the samples and halvings below, on the caller's evaluator), so that edges can be computed
+  // ahead in parallel and taken in the walk's order (prepare_edges).
+  struct EdgeWork {
+    std::vector<Candidate> found;  // in the order the halvings find them
+    std::size_t samples = 0, refines = 0;
+  };
+
+  static std::uint64_t edge_key(std::uint64_t ka, std::uint64_t kb, std::uint64_t corner_count) {
+    return std::min(ka, kb) * corner_count + std::max(ka, kb);
+  }
+
+  void refine(RegionEvaluator& f, EdgeWork& w, const Candidate& proto, const Point& x0, int r0, const Point& x1, int r1,
+              int depth) const {
     const Point xm = midpoint(x0, x1);
-    const int rm = f_.region(xm);
-    ++out_.stats.refine_evaluations;
-    ++edge.evaluations;
+    const int rm = f.region(xm);
+    ++w.refines;
     const bool known = rm == r0 || rm == r1;
     if ((depth >= s_.steps && known) || depth >= s_.steps + 40) {
       Candidate c = proto;
@@ -254,59 +276,104 @@ class Polygonizer {
       c.b = r1;
       c.in_a = rm == r0 ? xm : x0;
       c.in_b = rm == r1 ? xm : x1;
-      edge.vertices.push_back(new_candidate(c));
+      w.found.push_back(c);
       return;
     }
     if (rm == r0) {
-      refine(edge, proto, xm, rm, x1, r1, depth + 1);
+      refine(f, w, proto, xm, rm, x1, r1, depth + 1);
     } else if (rm == r1) {
-      refine(edge, proto, x0, r0, xm, rm, depth + 1);
+      refine(f, w, proto, x0, r0, xm, rm, depth + 1);
     } else {  // a foreign region: a crossing on each side of it
-      refine(edge, proto, x0, r0, xm, rm, depth + 1);
-      refine(edge, proto, xm, rm, x1, r1, depth + 1);
+      refine(f, w, proto, x0, r0, xm, rm, depth + 1);
+      refine(f, w, proto, xm, rm, x1, r1, depth + 1);
     }
   }
 
-  const EdgeRecord& edge(const Coord& a, const Coord& b) {
+  EdgeWork compute_edge(RegionEvaluator& f, const Coord& a, const Coord& b) const {
     const std::uint64_t ka = key(a), kb = key(b);
     const Coord& lo = ka < kb ? a : b;
     const Coord& hi = ka < kb ? b : a;
-    const std::uint64_t k = std::min(ka, kb) * corner_count_ + std::max(ka, kb);
-    const auto it = edge_index_.find(k);
-    if (it != edge_index_.end()) return edges_[it->second];
-    edge_index_.emplace(k, edges_.size());
-    edges_.emplace_back();
-    EdgeRecord& e = edges_.back();
+    EdgeWork w;
     const Point pa = position(lo), pb = position(hi);
     const int n = s_.sections;
-    samples_.resize(static_cast<std::size_t>(n + 1));
-    regions_.resize(static_cast<std::size_t>(n + 1));
+    if (n < 1) return w;  // checked with the settings; tells the compiler x and r are not empty
+    std::vector<Point> x(static_cast<std::size_t>(n + 1));
+    std::vector<int> r(static_cast<std::size_t>(n + 1));
     for (int i = 0; i <= n; ++i) {
       const double t = static_cast<double>(i) / n;
-      for (int d = 0; d < 3; ++d) samples_[static_cast<std::size_t>(i)][d] = pa[d] + t * (pb[d] - pa[d]);
+      for (int d = 0; d < 3; ++d) x[static_cast<std::size_t>(i)][d] = pa[d] + t * (pb[d] - pa[d]);
     }
-    samples_[0] = pa;
-    samples_[static_cast<std::size_t>(n)] = pb;
-    regions_[0] = corner_region(lo);
-    regions_[static_cast<std::size_t>(n)] = corner_region(hi);
+    x.front() = pa;  // the ends exactly
+    x.back() = pb;
+    r.front() = corner_region(lo);
+    r.back() = corner_region(hi);
     if (n > 1) {
-      const std::span<const int> r = f_.regions(std::span<const Point>(samples_.data() + 1, static_cast<std::size_t>(n - 1)));
-      std::copy(r.begin(), r.end(), regions_.begin() + 1);
-      out_.stats.sample_evaluations += static_cast<std::size_t>(n - 1);
-      e.evaluations += static_cast<std::size_t>(n - 1);
+      const std::span<const int> v = f.regions(std::span<const Point>(x.data() + 1, static_cast<std::size_t>(n - 1)));
+      std::copy(v.begin(), v.end(), r.begin() + 1);
+      w.samples = static_cast<std::size_t>(n - 1);
     }
     Candidate proto;
     proto.lo = std::min(ka, kb);
     proto.hi = std::max(ka, kb);
     const std::uint64_t ends[2] = {proto.lo, proto.hi};
     proto.cell = nonmanifold::make_simplex(ends, std::array<Point, 2>{pa, pb}.data(), 2);
-    const std::vector<Point>& x = samples_;
-    const std::vector<int>& r = regions_;
     for (int i = 0; i < n; ++i)
       if (r[static_cast<std::size_t>(i)] != r[static_cast<std::size_t>(i + 1)])
-        refine(e, proto, x[static_cast<std::size_t>(i)], r[static_cast<std::size_t>(i)], x[static_cast<std::size_t>(i + 1)],
+        refine(f, w, proto, x[static_cast<std::size_t>(i)], r[static_cast<std::size_t>(i)], x[static_cast<std::size_t>(i + 1)],
                r[static_cast<std::size_t>(i + 1)], 0);
+    return w;
+  }
+
+  // The edge's record: on first use its crossings (computed ahead by prepare_edges, or now)
+  // become candidates, numbered in the order of first use, as a one-thread walk makes them.
+  const EdgeRecord& edge(const Coord& a, const Coord& b) {
+    const std::uint64_t k = edge_key(key(a), key(b), corner_count_);
+    const auto it = edge_index_.find(k);
+    if (it != edge_index_.end()) return edges_[it->second];
+    EdgeWork w;
+    if (const auto ready = ready_.find(k); ready != ready_.end()) {
+      w = std::move(ready->second);
+      ready_.erase(ready);
+    } else {
+      w = compute_edge(f_, a, b);
+    }
+    edge_index_.emplace(k, edges_.size());
+    edges_.emplace_back();
+    EdgeRecord& e = edges_.back();
+    for (const Candidate& c : w.found) e.vertices.push_back(new_candidate(c));
+    e.evaluations = w.samples + w.refines;
+    out_.stats.sample_evaluations += w.samples;
+    out_.stats.refine_evaluations += w.refines;
     return e;
+  }
+
+  // The edges of the next kPrepareCubes queued cubes that are not computed yet, computed in
+  // parallel (each edge on its own, so the result does not depend on the threads) and kept
+  // until edge() takes them. Every queued cube is polygonized, and its five tetrahedra use all
+  // their edges, so nothing is computed that the one-thread walk would not.
+  void prepare_edges() {
+    std::vector<std::array<Coord, 2>> todo;
+    std::unordered_set<std::uint64_t> seen;
+    const std::size_t cubes = std::min(queue_.size(), kPrepareCubes);
+    for (std::size_t q = 0; q < cubes; ++q) {
+      const Coord& cube = queue_[q];
+      const int parity = static_cast<int>((cube[0] + cube[1] + cube[2]) & 1);
+      for (const auto& tet : kTets[parity])
+        for (int i = 0; i < 4; ++i)
+          for (int j = i + 1; j < 4; ++j) {
+            const Coord a = corner_of(cube, tet[i]), b = corner_of(cube, tet[j]);
+            const std::uint64_t k = edge_key(key(a), key(b), corner_count_);
+            if (edge_index_.contains(k) || ready_.contains(k) || !seen.insert(k).second) continue;
+            todo.push_back({a, b});
+          }
+    }
+    prepared_front_ = cubes;
+    std::vector<EdgeWork> done(todo.size());
+    tbb::parallel_for(std::size_t{0}, todo.size(), [&](std::size_t i) {
+      done[i] = compute_edge(workers_.local(), todo[i][0], todo[i][1]);
+    });
+    for (std::size_t i = 0; i < todo.size(); ++i)
+      ready_.emplace(edge_key(key(todo[i][0]), key(todo[i][1]), corner_count_), std::move(done[i]));
   }
 
   // Faces (§5.7.4), in canonical corner order.
@@ -612,8 +679,11 @@ class Polygonizer {
   std::size_t face_evaluations_ = 0;
   RegionMesh out_;
   std::vector<LatticeSimplex> cells_;  // per mesh vertex
-  std::vector<Point> samples_;
-  std::vector<int> regions_;
+  // Edges computed ahead of the walk (prepare_edges), by key, until first used; the queued
+  // cubes at the front whose edges were prepared; the evaluators of the threads.
+  std::unordered_map<std::uint64_t, EdgeWork> ready_;
+  std::size_t prepared_front_ = 0;
+  tbb::enumerable_thread_specific<RegionEvaluator> workers_;
 };
 
 }  // namespace
@@ -621,7 +691,9 @@ class Polygonizer {
 RegionMesh polygonize_regions(std::span<const Fn> regions, const NonmanifoldSettings& settings) {
   check_regions(regions);
   check_settings(regions.size(), settings);
-  return Polygonizer(regions, settings).run();
+  RegionMesh m;
+  raster_detail::run_with_threads(settings.threads, "polygonize_regions", [&] { m = Polygonizer(regions, settings).run(); });
+  return m;
 }
 
 std::vector<int> region_at(std::span<const Fn> regions, std::span<const std::array<double, 3>> points) {

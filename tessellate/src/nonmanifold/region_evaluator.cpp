@@ -7,9 +7,9 @@ namespace genmod::nonmanifold {
 
 namespace {
 
-Tape compile(std::span<const Fn> regions) {
+std::shared_ptr<const Tape> compile(std::span<const Fn> regions) {
   const int xyz[3] = {0, 1, 2};
-  return Tape(cat(regions), xyz);
+  return std::make_shared<const Tape>(cat(regions), xyz);
 }
 
 }  // namespace
@@ -43,7 +43,7 @@ std::span<const int> RegionEvaluator::regions(std::span<const Point> points) {
   const double* inputs[3] = {&points[0][0], &points[0][1], &points[0][2]};
   outputs_.resize(static_cast<std::size_t>(k_));
   for (int i = 0; i < k_; ++i) outputs_[static_cast<std::size_t>(i)] = values_.data() + static_cast<std::size_t>(i) * n;
-  batch_.eval(tape_, inputs, n, outputs_, 3, 1);
+  batch_.eval(*tape_, inputs, n, outputs_, 3, 1);
   for (std::size_t p = 0; p < n; ++p) out_[p] = arg_max(values_.data() + p, n, k_);
   count += n;
   return {out_.data(), n};

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -23,6 +24,9 @@ class RegionEvaluator {
  public:
   // `regions` must be scalar functions of x(0..2) (checked by the caller).
   explicit RegionEvaluator(std::span<const Fn> regions);
+  // Another evaluator of the same tape (shared, not recompiled) with its own scratch and a
+  // count of 0: one per thread.
+  RegionEvaluator worker() const { return RegionEvaluator(k_, tape_); }
   int count_regions() const noexcept { return k_; }
   // Regions of the points, valid until the next call.
   std::span<const int> regions(std::span<const Point> points);
@@ -30,8 +34,10 @@ class RegionEvaluator {
   std::size_t count = 0;  // points evaluated
 
  private:
+  RegionEvaluator(int k, std::shared_ptr<const Tape> tape) : k_(k), tape_(std::move(tape)) {}
+
   int k_;
-  Tape tape_;
+  std::shared_ptr<const Tape> tape_;  // immutable, shared by the workers
   BatchEvaluator batch_;
   std::vector<double> values_;
   std::vector<double*> outputs_;

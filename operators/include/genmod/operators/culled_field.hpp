@@ -41,10 +41,16 @@
 // Gaussian convolution (taper >= 0, as the factories below do) is culled by the rigorous bound
 //   |dD_e/dx_k| <= weight exp(-omega s^2) [(c0 + c1 s) + taper (c2 + c1 s^2)] / radius,
 //   s = delta / radius >= 1.5, c0 = sqrt(omega/pi), c1 = 2 omega, c2 = 2/sqrt(2 pi e)
-// (derived in culled_field_bounds.cpp), contributing [-b, b]; other Gaussian elements'
-// derivatives, and all second and higher derivatives of Gaussian elements, are never culled.
-// A derivative's point value follows the point rule above with the gradient bound (a skipped
-// subtree counts [-b, b]): it is within 2^-60 max(M, cull_below) of the exact partial sum.
+// (derived in culled_field_bounds.cpp), contributing [-b, b]. The second derivatives (the
+// derivative's derivative, as an implicit mesher's Hessian) of a constant-radius Gaussian
+// element (taper == 0: segments with r1 == r2 and point sources) are culled by
+//   |d^2 D_e / dx_j dx_k| <= weight c1 exp(-omega s^2) [(1 + c2) + 3 c0 s + c1 s^2] / radius^2,
+//   s = delta / radius >= 2
+// (derived there too), contributing [-b, b]. Other Gaussian elements' derivatives (taper < 0;
+// second derivatives of tapered segments) and all third and higher derivatives of Gaussian
+// elements are never culled. A derivative's point value follows the point rule above with the
+// derivative's bound (a skipped subtree counts [-b, b]): it is within 2^-60 max(M, cull_below)
+// of the exact partial sum.
 //
 // Example:
 //   Point3 a{0, 0, 0}, b{1, 0, 0};
@@ -76,8 +82,9 @@ struct FieldElement {
   // gaussian only. >= 0: the density is `weight` times a Gaussian point source of this radius
   // (point_source) or a Gaussian segment convolution of a-b whose larger end radius is
   // `radius` (segment_convolution), and taper >= |r2 - r1| / |b - a| (0 for a constant radius
-  // or a point): its first derivatives are then culled by the bound above. Negative (the
-  // default, for densities of another form): its derivatives are never culled.
+  // or a point): its first derivatives are then culled by the bound above, and with taper
+  // exactly 0 its second derivatives too. Negative (the default, for densities of another
+  // form): its derivatives are never culled.
   double taper = -1;
 };
 
@@ -94,6 +101,9 @@ struct CulledFieldOptions {
   // (false: a linear scan, the baseline the hierarchy is measured and tested against). Both
   // give sound bounds; the hierarchy's remainders are at least as tight.
   bool hierarchy = true;
+  // Cull the second derivatives of constant-radius Gaussian elements (above). false: they are
+  // evaluated on every box, as before issue 11's Hessian culling (the benchmarks' baseline).
+  bool cull_second_derivatives = true;
 };
 
 // The culled sum of `elements` as a scalar Fn of p = (x(0), x(1), x(2)). With `p` given, of
@@ -105,10 +115,11 @@ Fn culled_field(const std::vector<FieldElement>& elements, const CulledFieldOpti
 // The bound that culling uses for one element over a box (exposed for tests): an upper bound
 // of D_e over the box, +infinity when the element cannot be culled there.
 double culled_element_bound(const FieldElement& element, std::span<const Interval> box);
-// The same for the element's first partial derivatives: an upper bound of |dD_e/dx_k| over the
-// box for every k; +infinity where no bound is claimed (Falloff::none, a Gaussian element with
-// taper < 0, or a box nearer than 1.5 radius to a Gaussian skeleton, or within a compact
-// element's support).
-double culled_derivative_bound(const FieldElement& element, std::span<const Interval> box);
+// The same for the element's partial derivatives of order 1 or 2: an upper bound of |dD_e/dx_k|
+// (order 1) or |d^2 D_e / dx_j dx_k| (order 2) over the box for every j, k; +infinity where no
+// bound is claimed (Falloff::none, a Gaussian element with taper < 0 (order 1) or != 0 (order
+// 2), a box nearer than 1.5 (order 1) or 2 (order 2) radii to a Gaussian skeleton, or within a
+// compact element's support). std::invalid_argument for another order.
+double culled_derivative_bound(const FieldElement& element, std::span<const Interval> box, int order = 1);
 
 }  // namespace genmod

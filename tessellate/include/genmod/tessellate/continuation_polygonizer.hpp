@@ -54,7 +54,9 @@
 // Deterministic: cubes are visited in a fixed order (a stack, neighbours in the order -x +x
 // -y +y -z +z), vertices numbered in order of creation, the seed search uses a fixed
 // low-discrepancy sequence; hash tables are only looked up, never iterated. The same input
-// gives bitwise the same mesh. Single-threaded.
+// gives bitwise the same mesh, whatever `threads`: the walk runs on one thread and numbers the
+// vertices; their bisection and normals, most of the evaluations, run in parallel in chunks
+// fixed by the vertex numbers (polygonizer.cpp).
 #pragma once
 
 #include "genmod/kernel/fn.hpp"
@@ -99,6 +101,9 @@ struct ContinuationSettings {
   double search_radius = 0.0;
   // Compute one normal per vertex (four more evaluations of f each).
   bool normals = true;
+  // Threads placing the vertices (bisection and normals); 0 = all cores. The mesh is bitwise
+  // the same for every count.
+  int threads = 0;
 };
 
 struct ContinuationStats {

@@ -92,7 +92,10 @@
 //
 // Deterministic: fixed visiting order (cubes with corners in several regions in lattice
 // order, then the walk, FIFO, neighbours -x +x -y +y -z +z), vertices numbered as first used;
-// hash tables are only looked up. Single-threaded.
+// hash tables are only looked up. The corner scan and the edge vertices (sampling and halving,
+// most of the evaluations) run on `threads` threads, in batches fixed by the lattice (a chunk
+// of corners in lattice order, one edge's samples), and edges computed ahead of the walk are
+// numbered when the walk first uses them: the mesh is bitwise the same for every count.
 #pragma once
 
 #include "genmod/kernel/fn.hpp"
@@ -125,6 +128,9 @@ struct NonmanifoldSettings {
   // or the walk stops, reported as "cancelled" (the mesh is cut there, or empty when the scan
   // was stopped). Python's Ctrl-C sets it.
   const std::atomic<bool>* cancel = nullptr;
+  // Threads for the corner scan and the edge vertices; 0 = all cores. The mesh is bitwise the
+  // same for every count.
+  int threads = 0;
 };
 
 struct NonmanifoldStats {
