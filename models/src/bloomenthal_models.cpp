@@ -35,10 +35,6 @@ M rot_x(double deg) {
   const double c = std::cos(rad(deg)), s = std::sin(rad(deg));
   return {V{1, 0, 0}, V{0, c, -s}, V{0, s, c}};
 }
-M rot_y(double deg) {
-  const double c = std::cos(rad(deg)), s = std::sin(rad(deg));
-  return {V{c, 0, s}, V{0, 1, 0}, V{-s, 0, c}};
-}
 M rot_z(double deg) {
   const double c = std::cos(rad(deg)), s = std::sin(rad(deg));
   return {V{c, -s, 0}, V{s, c, 0}, V{0, 0, 1}};

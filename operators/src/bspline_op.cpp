@@ -80,6 +80,7 @@ BSplineOp::BSplineOp(int dim, int degree, std::vector<double> knots, std::vector
     if (rational()) hpoints_[i * hd + d] = w;
   }
   check_magnitudes();
+  fixed_de_boor_ = de_boor_kernel(degree_, hdim());
 
   // Rounding allowance per span: de Boor and the blossoms are convex combinations, each
   // level off by a few ulps of the largest control point; a rational curve divides by a
@@ -165,6 +166,10 @@ int BSplineOp::span(double t) const noexcept {
 }
 
 void BSplineOp::de_boor(int k, const double* params, double* out) const {
+  if (fixed_de_boor_) {
+    fixed_de_boor_(knots_.data(), hpoints_.data(), k, params, out);
+    return;
+  }
   const int p = degree_, hd = hdim();
   double d[kMaxDegree + 1][kMaxDim + 1];
   for (int j = 0; j <= p; ++j)

@@ -13,6 +13,8 @@
 // Outside its domain [u_p, u_n] a curve is an error (NaN), not an extrapolation.
 #pragma once
 
+#include "de_boor.hpp"
+
 #include "genmod/kernel/custom_op.hpp"
 
 #include <memory>
@@ -95,6 +97,7 @@ class BSplineOp final : public CustomOp, public std::enable_shared_from_this<BSp
   std::vector<double> pad_;                // rounding allowance per span
   bool continuous_ = false;
   std::vector<double> jumps_;  // jump_knots(order 0)
+  DeBoorKernel fixed_de_boor_ = nullptr;  // unrolled de Boor for this degree and hdim(), if any
   mutable std::once_flag derivative_once_, homogeneous_once_, rational_derivative_once_, unit_tangent_once_;
   mutable std::shared_ptr<const BSplineOp> derivative_, homogeneous_;
   mutable std::shared_ptr<const RationalDerivativeOp> rational_derivative_;

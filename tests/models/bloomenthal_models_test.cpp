@@ -127,7 +127,9 @@ TEST(BloomenthalModels, Claim22PointsConvergeToSegments) {
     EXPECT_LT(worst, previous) << n;
     previous = worst;
     std::printf("arc of %d: max |points - segments| = %.3g\n", n, worst);
-    if (n == 127) EXPECT_LT(worst, 1e-3);
+    if (n == 127) {
+      EXPECT_LT(worst, 1e-3);
+    }
   }
 }
 

@@ -360,7 +360,7 @@ PairCurve pair_curve(const ClosedSurface& first, const ClosedSurface& second, co
   PairCurve out;
   // Step 1: the intersection curve in (u, v, s, t).
   SurfaceIntersectionOptions co{.periodic_u = first.periodic_u, .periodic_v = first.periodic_v,
-                                .periodic_s = second.periodic_u, .periodic_t = second.periodic_v};
+                                .periodic_s = second.periodic_u, .periodic_t = second.periodic_v, .curve = {}};
   co.curve.acceptance_width = options.curve_width;
   co.curve.limits.time_limit = options.curve_time;
   const bool periodic[] = {co.periodic_u, co.periodic_v, co.periodic_s, co.periodic_t};
