@@ -152,8 +152,9 @@ mesh.png() a shaded preview (a notebook shows a mesh through _repr_png_).)doc")
 Returns (mesh, stats); stats names the limits hit (the mesh is then coarser, still valid).)doc");
 
   m.def("polygonize_continuation", [](const Fn& f, double cube_size, const py::object& starts, const py::object& box,
-                                      bool cubes, int bisections, std::size_t max_cubes) {
+                                      bool cubes, int bisections, std::size_t max_cubes, int threads) {
         ContinuationSettings s;
+        s.threads = threads;
         s.cube_size = cube_size;
         if (!starts.is_none()) {
           const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(starts);
@@ -181,18 +182,20 @@ Returns (mesh, stats); stats names the limits hit (the mesh is then coarser, sti
         return py::make_tuple(result.mesh, stats);
       }, py::arg("f"), py::arg("cube_size"), py::arg("starts") = py::none(), py::arg("box") = py::none(),
       py::arg("cubes") = false, py::arg("bisections") = 10, py::arg("max_cubes") = std::size_t{10'000'000},
+      py::arg("threads") = 0,
       R"doc(Bloomenthal's continuation polygonizer: the pieces of the surface f = 0 reached from the
 start points (shape (N, 3); default: a seed searched in box), cubes of edge cube_size, only cubes
 whose centre is in box (shape (3, 2)) visited. cubes=True uses the cube table instead of six
-tetrahedra per cube.
+tetrahedra per cube. threads: worker threads (0 = all cores); the mesh is the same for any count.
 
 Returns (mesh, stats); stats has the cubes visited, evaluations of f, the vertex error bound,
 the seeds, the limits hit and the per-vertex normals (V, 3).)doc");
 
   m.def("polygonize_regions", [](const std::vector<Fn>& regions, double cube_size, const py::object& box,
                                  const py::object& interest, int sections, int steps, double close_factor,
-                                 std::size_t max_cubes, bool split) {
+                                 std::size_t max_cubes, bool split, int threads) {
         NonmanifoldSettings s;
+        s.threads = threads;
         s.cube_size = cube_size;
         s.bounds = box_from(box.cast<py::array_t<double, py::array::c_style | py::array::forcecast>>());
         if (!interest.is_none())
@@ -256,12 +259,12 @@ the seeds, the limits hit and the per-vertex normals (V, 3).)doc");
         return py::make_tuple(split_mesh, pairs, stats);
       }, py::arg("regions"), py::arg("cube_size"), py::arg("box"), py::arg("interest") = py::none(),
       py::arg("sections") = 16, py::arg("steps") = 4, py::arg("close_factor") = 1.0,
-      py::arg("max_cubes") = std::size_t{10'000'000}, py::arg("split") = false,
+      py::arg("max_cubes") = std::size_t{10'000'000}, py::arg("split") = false, py::arg("threads") = 0,
       R"doc(Bloomenthal's non-manifold polygonizer: the boundaries between regions of space. The region of
 a point is the index of the largest of the functions `regions` (K >= 2 scalar functions of x, y,
 z); interest is a list of region pairs to mesh (default: all). Cubes of edge cube_size fill box
 (shape (3, 2)); each tetrahedron edge is sampled at `sections` points and each crossing refined
-by `steps` halvings.
+by `steps` halvings. threads: worker threads (0 = all cores); the mesh is the same for any count.
 
 Returns (mesh, pairs, stats): pairs (F, 2) int32 gives each triangle's regions (first < second;
 the normal points into the second); stats has the evaluations of the region function by

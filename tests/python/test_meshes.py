@@ -96,6 +96,10 @@ def test_continuation_polygonizer_meshes_the_piece_of_the_start():
     assert stats["normals"].shape == mesh.vertices.shape and stats["limits_hit"] == []
     both, _ = gm.polygonize_continuation(two, 0.1, starts=np.array([[-1.0, 0, 0], [1.0, 0, 0]]), cubes=True)
     assert both.validate()["components"] == 2
+    # The same mesh on one thread and on two.
+    one, _ = gm.polygonize_continuation(two, 0.1, starts=np.array([[-1.0, 0.0, 0.0]]), threads=1)
+    pair, _ = gm.polygonize_continuation(two, 0.1, starts=np.array([[-1.0, 0.0, 0.0]]), threads=2)
+    assert np.array_equal(one.vertices, pair.vertices) and np.array_equal(one.triangles, pair.triangles)
     with pytest.raises(ValueError, match="cube_size"):
         gm.polygonize_continuation(two, 0.0, starts=np.array([[-1.0, 0, 0]]))
     with pytest.raises(RuntimeError, match="not near the surface"):
@@ -110,6 +114,8 @@ def test_polygonize_regions_meshes_a_ball_cut_by_a_plane():
     assert pairs.shape == (len(mesh.triangles), 2) and pairs.dtype == np.int32
     assert {tuple(p) for p in pairs} == {(0, 1), (0, 2), (1, 2)}
     assert stats["limits_hit"] == [] and stats["face_vertex_fallbacks"] == 0
+    one, pairs1, _ = gm.polygonize_regions([gm.min(d, z), gm.min(d, -z), -d], 0.1, box, threads=1)
+    assert np.array_equal(one.vertices, mesh.vertices) and np.array_equal(pairs1, pairs)
     # Edges of degree 3 exactly where the three sheets meet: on the circle r = 0.7, z = 0.
     edges = np.sort(mesh.triangles[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
     unique, degree = np.unique(edges, axis=0, return_counts=True)
