@@ -8,6 +8,7 @@
 #include "genmod/operators/convolution.hpp"
 #include "genmod/operators/culled_field.hpp"
 #include "operators/operator_properties.hpp"
+#include "operators/random_skeleton_field.hpp"
 
 #include <gtest/gtest.h>
 
@@ -157,20 +158,12 @@ TEST(CulledFieldGradientBound, OnlyDeclaredGaussianConvolutionsAreBounded) {
 // A random tree of short segments in [-1, 1]^3 (Gaussian, tapered one time in three) with a
 // few Wyvill point sources (compact).
 std::vector<FieldElement> random_field(int n, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1), w(0, 1);
-  std::vector<Point3> nodes = {{0, 0, 0}};
-  std::vector<FieldElement> es;
-  for (int i = 0; i < n; ++i) {
-    const Point3 a = nodes[std::uniform_int_distribution<std::size_t>(0, nodes.size() - 1)(rng)];
-    const Point3 b = {std::clamp(a[0] + 0.15 * u(rng), -1.0, 1.0), std::clamp(a[1] + 0.15 * u(rng), -1.0, 1.0),
-                      std::clamp(a[2] + 0.15 * u(rng), -1.0, 1.0)};
-    nodes.push_back(b);
-    const double r = 0.02 + 0.02 * w(rng);
-    if (i % 10 == 9) es.push_back({point_source(b, r, 1.0, Kernel::wyvill), b, b, 1.0, 2 * r, Falloff::compact});
-    else es.push_back(gaussian_segment_element(a, b, r, i % 3 == 0 ? r * (0.5 + w(rng)) : r));
-  }
-  return es;
+  return testing::random_skeleton_field(
+      n, seed,
+      [](const Point3& b, double r, std::mt19937&) {
+        return FieldElement{point_source(b, r, 1.0, Kernel::wyvill), b, b, 1.0, 2 * r, Falloff::compact};
+      },
+      [](int i) { return i % 3 == 0; });
 }
 
 // Boxes of many sizes: points, tiny boxes on the skeleton, boxes of all sizes anywhere

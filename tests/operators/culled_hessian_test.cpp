@@ -7,6 +7,7 @@
 #include "genmod/kernel/tape.hpp"
 #include "genmod/operators/convolution.hpp"
 #include "genmod/operators/culled_field.hpp"
+#include "operators/random_skeleton_field.hpp"
 
 #include <gtest/gtest.h>
 
@@ -143,20 +144,12 @@ TEST(CulledFieldHessianBound, OnlyConstantRadiusGaussiansAreBounded) {
 // A random tree of short constant-radius segments in [-1, 1]^3 with a few point sources and,
 // with `tapered`, one tapered segment in eight (their second derivatives are never culled).
 std::vector<FieldElement> random_field(int n, unsigned seed, bool tapered) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-1, 1), w(0, 1);
-  std::vector<Point3> nodes = {{0, 0, 0}};
-  std::vector<FieldElement> es;
-  for (int i = 0; i < n; ++i) {
-    const Point3 a = nodes[std::uniform_int_distribution<std::size_t>(0, nodes.size() - 1)(rng)];
-    const Point3 b = {std::clamp(a[0] + 0.15 * u(rng), -1.0, 1.0), std::clamp(a[1] + 0.15 * u(rng), -1.0, 1.0),
-                      std::clamp(a[2] + 0.15 * u(rng), -1.0, 1.0)};
-    nodes.push_back(b);
-    const double r = 0.02 + 0.02 * w(rng);
-    if (i % 10 == 9) es.push_back(gaussian_point_element(b, r, 0.5 + w(rng)));
-    else es.push_back(gaussian_segment_element(a, b, r, tapered && i % 8 == 0 ? r * (0.5 + w(rng)) : r));
-  }
-  return es;
+  return genmod::testing::random_skeleton_field(
+      n, seed,
+      [](const Point3& b, double r, std::mt19937& rng) {
+        return gaussian_point_element(b, r, 0.5 + std::uniform_real_distribution<double>(0, 1)(rng));
+      },
+      [tapered](int i) { return tapered && i % 8 == 0; });
 }
 
 // Boxes near the skeleton (points and small boxes on it), straddling it (boxes of all sizes
@@ -190,7 +183,7 @@ std::vector<double> sample(const std::vector<Interval>& box, std::mt19937& rng) 
 // tolerance; over far boxes the Hessian of a field without tapered segments is a pure
 // remainder [-R, R] (every element culled) while without Hessian culling it is not, and both
 // contain the samples.
-class CulledFieldHessian : public testing::TestWithParam<bool> {};
+class CulledFieldHessian : public ::testing::TestWithParam<bool> {};
 
 TEST_P(CulledFieldHessian, InclusionContainsThePlainSumsSecondDerivatives) {
   const bool tapered = GetParam();
@@ -231,7 +224,7 @@ TEST_P(CulledFieldHessian, InclusionContainsThePlainSumsSecondDerivatives) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Tapered, CulledFieldHessian, testing::Bool());
+INSTANTIATE_TEST_SUITE_P(Tapered, CulledFieldHessian, ::testing::Bool());
 
 // A tiny cull_below makes the inclusion evaluate elements that a point's walk skips: its
 // widening must still hold the Hessian's point values.
