@@ -24,19 +24,8 @@ const int kXyz[3] = {0, 1, 2};
 
 double at(const Fn& f, double x, double y, double z) { return evaluate(f, std::vector<double>{x, y, z})[0]; }
 
-std::vector<Interval> cube(const Point3& c, double half) {
-  return {Interval(c[0] - half, c[0] + half), Interval(c[1] - half, c[1] + half), Interval(c[2] - half, c[2] + half)};
-}
-
-// The exact distance from p to the segment a-b.
-double segment_distance(const Point3& a, const Point3& b, const Point3& p) {
-  double ab2 = 0, t = 0;
-  for (int i = 0; i < 3; ++i) ab2 += (b[i] - a[i]) * (b[i] - a[i]), t += (p[i] - a[i]) * (b[i] - a[i]);
-  t = ab2 > 0 ? std::clamp(t / ab2, 0.0, 1.0) : 0.0;
-  double d2 = 0;
-  for (int i = 0; i < 3; ++i) d2 += (p[i] - a[i] - t * (b[i] - a[i])) * (p[i] - a[i] - t * (b[i] - a[i]));
-  return std::sqrt(d2);
-}
+using testing::cube;
+using testing::segment_distance;
 
 // A point at distance s * r from the segment a-b along axis `axis` (a, b on that axis): beside
 // it, beyond an end, or diagonally off an end.

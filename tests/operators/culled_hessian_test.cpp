@@ -25,18 +25,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // The six second partials xx xy xz yy yz zz.
 const int kPairs[6][2] = {{0, 0}, {0, 1}, {0, 2}, {1, 1}, {1, 2}, {2, 2}};
 
-std::vector<Interval> cube(const Point3& c, double half) {
-  return {Interval(c[0] - half, c[0] + half), Interval(c[1] - half, c[1] + half), Interval(c[2] - half, c[2] + half)};
-}
-
-double segment_distance(const Point3& a, const Point3& b, const Point3& p) {
-  double ab2 = 0, t = 0;
-  for (int i = 0; i < 3; ++i) ab2 += (b[i] - a[i]) * (b[i] - a[i]), t += (p[i] - a[i]) * (b[i] - a[i]);
-  t = ab2 > 0 ? std::clamp(t / ab2, 0.0, 1.0) : 0.0;
-  double d2 = 0;
-  for (int i = 0; i < 3; ++i) d2 += (p[i] - a[i] - t * (b[i] - a[i])) * (p[i] - a[i] - t * (b[i] - a[i]));
-  return std::sqrt(d2);
-}
+using testing::cube;
+using testing::segment_distance;
 
 std::vector<Tape> hessian_tapes(const Fn& f) {
   std::vector<Tape> out;
