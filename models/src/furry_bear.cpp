@@ -21,11 +21,14 @@
 #include "genmod/kernel/tape.hpp"
 #include "genmod/operators/sweep.hpp"
 #include "genmod/operators/vector.hpp"
+#include "hair_clearance.hpp"
 #include "model_definitions.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -80,6 +83,41 @@ Fn scalp_at(const Fn& scalp_surface, const Fn& u, const Fn& v) {
   return compose_all(scalp_surface, uv, cat({u, v}));
 }
 
+// A radius about the hair's axis that holds its whole tube. The tube's cross section at s is
+// the root ring scaled by 1 - s^2 about the axis point S + s L d, so the largest distance of
+// the ring from S bounds it. Sampled at 64 points: between samples the distance can grow by
+// at most half the ring's arc between them (pi / 64 of its radius, 5%); 10% is added.
+double tube_radius(PointEvaluator& ev, const Tape& surface, const Hair& h) {
+  constexpr int kSamples = 64;
+  double largest = 0.0;
+  for (int k = 0; k < kSamples; ++k) {
+    const double phi = 2.0 * std::numbers::pi * k / kSamples;
+    const auto e = ev.eval(surface, {h.root.u + h.root.a * std::cos(phi), h.root.v + h.root.b * std::sin(phi)});
+    largest = std::max(largest, std::hypot(e[0] - h.base[0], e[1] - h.base[1], e[2] - h.base[2]));
+  }
+  return 1.1 * largest;
+}
+
+// Hairs combed toward a pole converge on it (the lean atan(kappa / |S_u|) grows to 90 degrees
+// where the scalp's circles shrink): with many rows, a large kappa or long hairs the top
+// row's tubes cross each other (hair_rows 14 at the defaults: 4,546 intersecting triangle
+// pairs). Such parameters are rejected, naming the hairs: a convex hull about each hair's
+// axis, tapering with the tube (hair_clearance.hpp), holds the tube and its mesh, so apart
+// hulls give apart tubes.
+void require_hairs_apart(const ParameterValues& p, int rows, const std::vector<Hair>& hairs,
+                         const std::vector<detail::HairCapsule>& capsules) {
+  const std::optional<detail::HairOverlap> overlap = detail::deepest_hair_overlap(capsules);
+  if (!overlap) return;
+  const HairRoot &a = hairs[overlap->a].root, &b = hairs[overlap->b].root;
+  auto at = [](const HairRoot& r) { return "(" + std::to_string(r.u) + ", " + std::to_string(r.v) + ")"; };
+  throw std::invalid_argument(
+      "parameters 'hair_rows' (" + std::to_string(rows) + "), 'kappa' (" + std::to_string(detail::param(p, "kappa")) +
+      ") and 'hair_length' (" + std::to_string(detail::param(p, "hair_length")) + "): the hairs rooted at (u, v) = " +
+      at(a) + " and " + at(b) + " come " + std::to_string(overlap->distance) +
+      " apart where their tubes' radii add up to " + std::to_string(overlap->radii) +
+      ", so the tubes may cross; use fewer hair_rows, a smaller kappa or a shorter hair_length");
+}
+
 std::vector<Hair> hairs_of(const ParameterValues& p) {
   const int rows = hair_rows_of(p), around = 2 * rows;
   const double radius = detail::require_positive(p, "hair_radius");
@@ -87,8 +125,10 @@ std::vector<Hair> hairs_of(const ParameterValues& p) {
   const Fn s = scalp(p);
   const Tape hair(furry_bear_hair(p), std::vector<int>{0, 1});
   const Tape jacobian(cat({derivative(s, 0), derivative(s, 1)}), std::vector<int>{0, 1});
+  const Tape surface(s, std::vector<int>{0, 1});
   PointEvaluator ev;
   std::vector<Hair> hairs;
+  std::vector<detail::HairCapsule> capsules;
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < around; ++i) {
       const double u = (i + 0.5) / around, v = (j + 0.5) / rows;
@@ -107,7 +147,9 @@ std::vector<Hair> hairs_of(const ParameterValues& p) {
       hairs.push_back({{u, v, a, b},
                        {h[0], h[1], h[2]},
                        {(h[3] - h[0]) / length, (h[4] - h[1]) / length, (h[5] - h[2]) / length}});
+      capsules.push_back({{h[0], h[1], h[2]}, {h[3], h[4], h[5]}, tube_radius(ev, surface, hairs.back())});
     }
+  require_hairs_apart(p, rows, hairs, capsules);
   return hairs;
 }
 
@@ -207,13 +249,13 @@ Model furry_bear_model() {
   m.parameters = {{"size", 1.0, "half the body's height (the body spans z in [-size, size])"},
                   {"hair_length", 0.08, "length of every hair"},
                   {"kappa", 1.5, "combing: the hair leans from the normal N toward S_v by atan(kappa |S_v| / |N|)"},
-                  {"hair_rows", 12, "hairs output: hair_rows rows (in v) of 2 hair_rows hairs (in u), a whole number in [1, 14]"},
+                  {"hair_rows", 12, "hairs output: hair_rows rows (in v) of 2 hair_rows hairs (in u), a whole number in [1, 14]; hairs combed toward the top pole converge, and combinations whose tubes may cross (14 rows at the default kappa and hair_length, long hairs) are rejected"},
                   {"hair_radius", 0.004, "radius of a hair at its root on the scalp (each hair is a thin tube from a root ring on the scalp, narrowing as 1 - s^2 to a point at its tip)"}};
   m.build = [](const ParameterValues& p) {
     require_positive(p, "hair_length");
     require_positive(p, "hair_radius");
     kappa_of(p);
-    hairs_of(p);  // hair_rows, and every root fits in its cell
+    hairs_of(p);  // hair_rows, every root fits in its cell, no two tubes cross
     return scalp(p);
   };
   m.periodic_u = true;

@@ -3,6 +3,7 @@
 #include "genmod/tessellate/parametric_mesher.hpp"
 
 #include "parametric/edge_gluing.hpp"
+#include "parametric/fold_repair.hpp"
 #include "parametric/kd_subdivision.hpp"
 #include "parametric/leaf_triangulation.hpp"
 #include "parametric/mesh_orientation.hpp"
@@ -56,6 +57,71 @@ void check_input(const std::vector<SurfacePatch>& patches, const AdaptiveMeshOpt
   }
 }
 
+// Every sample point, evaluated once; a point where the surface is undefined is an error.
+std::vector<std::array<double, 3>> evaluate_points(const std::vector<CompiledPatch>& compiled,
+                                                   const parametric::LeafTriangulation& tri) {
+  std::vector<std::array<double, 3>> at(tri.points.size());
+  tbb::enumerable_thread_specific<PointEvaluator> evaluators;
+  tbb::parallel_for(std::size_t{0}, tri.points.size(), [&](std::size_t i) {
+    const GridPoint& g = tri.points[i];
+    const CompiledPatch& c = compiled[g.patch];
+    const double uv[2] = {parametric::grid_value(c.u, g.u), parametric::grid_value(c.v, g.v)};
+    const auto s = evaluators.local().eval(c.value, uv);
+    at[i] = {s[0], s[1], s[2]};
+  });
+  for (std::size_t i = 0; i < at.size(); ++i)
+    if (!std::isfinite(at[i][0]) || !std::isfinite(at[i][1]) || !std::isfinite(at[i][2])) {
+      const GridPoint& g = tri.points[i];
+      std::ostringstream msg;
+      msg.precision(17);
+      msg << "genmod: mesh_adaptive: patch " << g.patch << ": the surface is undefined at (u, v) = ("
+          << parametric::grid_value(compiled[g.patch].u, g.u) << ", "
+          << parametric::grid_value(compiled[g.patch].v, g.v) << ")";
+      throw std::domain_error(msg.str());
+    }
+  return at;
+}
+
+// The mesh's triangles as triangulation points: the leaves' triangles, then each quad split
+// along its shorter diagonal in space (a collapsed diagonal keeps the other). Triangles with
+// a repeated vertex (at poles) are dropped and counted.
+std::vector<parametric::LeafTriangle> mesh_triangles(const parametric::LeafTriangulation& tri,
+                                                     const std::vector<std::array<double, 3>>& at,
+                                                     std::size_t& dropped) {
+  dropped = 0;
+  std::vector<parametric::LeafTriangle> out;
+  auto emit = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t leaf) {
+    const std::uint32_t ra = tri.representative[a], rb = tri.representative[b], rc = tri.representative[c];
+    if (ra == rb || rb == rc || ra == rc) {
+      ++dropped;
+      return;
+    }
+    out.push_back({{a, b, c}, leaf});
+  };
+  auto distance2 = [&](std::uint32_t a, std::uint32_t b) {
+    const auto& p = at[tri.representative[a]];
+    const auto& q = at[tri.representative[b]];
+    return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
+  };
+  for (std::size_t i = 0; i < tri.triangles.size(); ++i) {
+    const auto& t = tri.triangles[i];
+    emit(t[0], t[1], t[2], tri.triangle_leaf[i]);
+  }
+  for (std::size_t i = 0; i < tri.quads.size(); ++i) {
+    const auto& q = tri.quads[i];
+    const std::uint32_t leaf = tri.quad_leaf[i];
+    const double d02 = distance2(q[0], q[2]), d13 = distance2(q[1], q[3]);
+    if (d13 == 0.0 || (d02 > 0.0 && d02 <= d13)) {
+      emit(q[0], q[1], q[2], leaf);
+      emit(q[0], q[2], q[3], leaf);
+    } else {
+      emit(q[0], q[1], q[3], leaf);
+      emit(q[1], q[2], q[3], leaf);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 AdaptiveMesh mesh_adaptive(const std::vector<SurfacePatch>& patches, const AdaptiveMeshOptions& options) {
@@ -69,40 +135,34 @@ AdaptiveMesh mesh_adaptive(const std::vector<SurfacePatch>& patches, const Adapt
     const parametric::Subdivision tree = parametric::subdivide(compiled, options);
     result.interval_evaluations = tree.interval_evaluations;
     result.limits_hit = tree.limits_hit;
-    for (const auto& leaves : tree.leaves) {
-      result.leaves += leaves.size();
-      for (const parametric::Leaf& l : leaves) {
-        result.distance_bound = std::max(result.distance_bound, l.bound);
-        if (!std::isfinite(l.bound)) ++result.unbounded_leaves;
-      }
-    }
     const parametric::EdgeTopology topology = parametric::find_edge_topology(patches, compiled, options);
     std::set<std::pair<std::uint32_t, int>> glued;
     for (const auto& g : topology.glues) glued.insert({g.a.patch, g.a.side}), glued.insert({g.b.patch, g.b.side});
     result.glued_edges = glued.size();
     result.collapsed_edges = topology.collapsed.size();
-    const parametric::LeafTriangulation tri = parametric::triangulate_leaves(tree.leaves, topology);
 
-    // Every sample point, evaluated once.
-    std::vector<std::array<double, 3>> at(tri.points.size());
-    tbb::enumerable_thread_specific<PointEvaluator> evaluators;
-    tbb::parallel_for(std::size_t{0}, tri.points.size(), [&](std::size_t i) {
-      const GridPoint& g = tri.points[i];
-      const CompiledPatch& c = compiled[g.patch];
-      const double uv[2] = {parametric::grid_value(c.u, g.u), parametric::grid_value(c.v, g.v)};
-      const auto s = evaluators.local().eval(c.value, uv);
-      at[i] = {s[0], s[1], s[2]};
-    });
-    for (std::size_t i = 0; i < at.size(); ++i)
-      if (!std::isfinite(at[i][0]) || !std::isfinite(at[i][1]) || !std::isfinite(at[i][2])) {
-        const GridPoint& g = tri.points[i];
-        std::ostringstream msg;
-        msg.precision(17);
-        msg << "genmod: mesh_adaptive: patch " << g.patch << ": the surface is undefined at (u, v) = ("
-            << parametric::grid_value(compiled[g.patch].u, g.u) << ", "
-            << parametric::grid_value(compiled[g.patch].v, g.v) << ")";
-        throw std::domain_error(msg.str());
+    // Triangulate; split the leaves of folded triangles (fold_repair.hpp) and again, a few
+    // rounds at most (each halves the folded leaves; the bear's folds go in one or two).
+    constexpr int kFoldRounds = 8;
+    std::vector<std::vector<parametric::Leaf>> leaves = tree.leaves;
+    parametric::LeafTriangulation tri;
+    std::vector<std::array<double, 3>> at;
+    std::vector<parametric::LeafTriangle> triangles;
+    for (int round = 0;; ++round) {
+      tri = parametric::triangulate_leaves(leaves, topology);
+      at = evaluate_points(compiled, tri);
+      triangles = mesh_triangles(tri, at, result.dropped_triangles);
+      if (round == kFoldRounds) break;
+      const std::vector<std::uint32_t> folded = parametric::folded_leaves(compiled, tri, at, triangles);
+      if (folded.empty() || parametric::split_leaves(compiled, leaves, folded, options.max_depth) == 0) break;
+    }
+    for (const auto& patch_leaves : leaves) {
+      result.leaves += patch_leaves.size();
+      for (const parametric::Leaf& l : patch_leaves) {
+        result.distance_bound = std::max(result.distance_bound, l.bound);
+        if (!std::isfinite(l.bound)) ++result.unbounded_leaves;
       }
+    }
 
     // Vertices: one per representative, numbered in point order.
     std::vector<std::uint32_t> vertex(tri.points.size(), UINT32_MAX);
@@ -120,32 +180,8 @@ AdaptiveMesh mesh_adaptive(const std::vector<SurfacePatch>& patches, const Adapt
       }
       return vertex[r];
     };
-    auto emit = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-      const std::uint32_t ra = tri.representative[a], rb = tri.representative[b], rc = tri.representative[c];
-      if (ra == rb || rb == rc || ra == rc) {
-        ++result.dropped_triangles;
-        return;
-      }
-      result.mesh.triangles.push_back({vertex_of(a), vertex_of(b), vertex_of(c)});
-    };
-    auto distance2 = [&](std::uint32_t a, std::uint32_t b) {
-      const auto& p = at[tri.representative[a]];
-      const auto& q = at[tri.representative[b]];
-      return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) + (p[2] - q[2]) * (p[2] - q[2]);
-    };
-    for (const auto& t : tri.triangles) emit(t[0], t[1], t[2]);
-    for (const auto& q : tri.quads) {
-      // The shorter diagonal in space; a collapsed diagonal keeps the other.
-      const double d02 = distance2(q[0], q[2]), d13 = distance2(q[1], q[3]);
-      const bool use02 = d13 == 0.0 || (d02 > 0.0 && d02 <= d13);
-      if (use02) {
-        emit(q[0], q[1], q[2]);
-        emit(q[0], q[2], q[3]);
-      } else {
-        emit(q[0], q[1], q[3]);
-        emit(q[1], q[2], q[3]);
-      }
-    }
+    for (const parametric::LeafTriangle& t : triangles)
+      result.mesh.triangles.push_back({vertex_of(t.points[0]), vertex_of(t.points[1]), vertex_of(t.points[2])});
     if (std::isfinite(result.distance_bound)) result.distance_bound += result.seam_deviation;
 
     const parametric::OrientationReport orientation = parametric::orient_outward(result.mesh);

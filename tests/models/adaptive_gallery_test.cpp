@@ -82,7 +82,8 @@ TEST(AdaptiveGallerySolid, FullCircleBeamIsOneClosedRing) {
 // (Euler characteristic 2), valid, and every hair's tip (furry_bear_hair) is a vertex of it.
 // Few rows give wide cells near the poles (their folds were cured by the polar caps), more
 // rows more hairs. (At hair_rows 14 with the default kappa and hair_length the top row's
-// hairs, combed toward the pole, cross each other: a property of the model, not the mesh.)
+// hairs, combed toward the pole, cross each other: a property of the model, not the mesh,
+// rejected when the model is built: FurryBear.CrossingHairsAreRejected.)
 TEST(FurryBearMesh, ScalpAndHairsAreOneSphere) {
   const Model& bear = find_model("furry_bear");
   for (const double rows : {3.0, 8.0}) {
@@ -111,6 +112,24 @@ TEST(FurryBearMesh, ScalpAndHairsAreOneSphere) {
         }
     }
     EXPECT_EQ(tips, static_cast<std::size_t>(2 * rows * rows));
+  }
+}
+
+// At coarse tolerances the scalp's pieces about each root, slivers fanning out from the root
+// ellipse on the flat bottom, were triangulated into backward triangles within the distance
+// bound (tolerance 0.02: 20 intersecting pairs); their leaves are now split until no mesh
+// triangle faces against the surface (fold_repair.hpp).
+TEST(FurryBearMesh, CoarseTolerancesGiveNoFolds) {
+  const Model& bear = find_model("furry_bear");
+  const ParameterValues p = resolve_parameters(bear);
+  const Fn scalp = bear.build(p);
+  for (const double tol : {0.02, 0.05}) {
+    const AdaptiveMesh m = mesh_model_adaptive(bear, scalp, p, {.tolerance = tol});
+    ASSERT_TRUE(m.limits_hit.empty());
+    EXPECT_LE(m.distance_bound, tol);
+    const MeshValidity v = validate(m.mesh);
+    EXPECT_EQ(v.self_intersections, 0u) << tol << "\n" << describe(v);
+    EXPECT_TRUE(v.valid()) << tol << "\n" << describe(v);
   }
 }
 

@@ -189,8 +189,10 @@ LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leave
   for (const EdgeRef& e : topology.collapsed) collapsed[e.patch][static_cast<std::size_t>(e.side)] = true;
   for (std::size_t i = 0; i < polygons.size(); ++i) {
     const std::vector<GridPoint>& poly = polygons[i];
+    const auto leaf = static_cast<std::uint32_t>(i);
     if (poly.size() == 4) {
       out.quads.push_back({index(poly[0]), index(poly[1]), index(poly[2]), index(poly[3])});
+      out.quad_leaf.push_back(leaf);
       continue;
     }
     const GridRect& r = rects[i];
@@ -223,12 +225,15 @@ LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leave
       // runs into the lower-left corner, where the bottom edge starts.)
       if (kept.size() >= 3 && clip_ears(plane, [&](std::size_t a, std::size_t b, std::size_t d) {
             out.triangles.push_back({index(poly[kept[a]]), index(poly[kept[b]]), index(poly[kept[d]])});
-          }))
+          })) {
+        out.triangle_leaf.resize(out.triangles.size(), leaf);
         continue;
+      }
     }
     zip_polygon(poly, r, [&](std::size_t a, std::size_t b, std::size_t c2) {
       out.triangles.push_back({index(poly[a]), index(poly[b]), index(poly[c2])});
     });
+    out.triangle_leaf.resize(out.triangles.size(), leaf);
   }
 
   // Seams and poles: points that are one surface point share the smallest as representative.

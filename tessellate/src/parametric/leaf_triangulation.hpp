@@ -29,6 +29,9 @@ struct LeafTriangulation {
   std::vector<std::uint32_t> representative;
   std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise in (u, v)
   std::vector<std::array<std::uint32_t, 4>> quads;      // counter-clockwise in (u, v)
+  // The leaf each triangle and quad comes from: its index in the leaves of all patches, in
+  // order (patch 0's leaves first).
+  std::vector<std::uint32_t> triangle_leaf, quad_leaf;
 };
 
 LeafTriangulation triangulate_leaves(const std::vector<std::vector<Leaf>>& leaves, const EdgeTopology& topology);

@@ -161,7 +161,9 @@ Fn furry_bear_hair(const ParameterValues& p);
 // image of the ellipse (u + a cos phi, v + b sin phi) about the cell's centre (u, v), with
 // a = hair_radius / |S_u|, b = hair_radius / |S_v| at (u, v) (a circle of radius hair_radius
 // to first order: S_u is perpendicular to S_v on the profile product). Throws
-// std::invalid_argument naming hair_radius when an ellipse does not fit in a quarter of its cell.
+// std::invalid_argument naming hair_radius when an ellipse does not fit in a quarter of its cell,
+// and naming hair_rows, kappa and hair_length when two hairs' tubes may cross (hairs combed
+// toward the top pole converge on it; checked on tapered hulls about the hair segments).
 struct HairRoot {
   double u, v, a, b;
 };

@@ -37,6 +37,12 @@
 //     with a repeated vertex are dropped. A closed object gives a closed mesh as written.
 //  4. Orientation from the geometry: triangles are made consistent across glued edges, then
 //     each closed component is turned so that its signed volume is positive (outward).
+//  5. No folds: the distance bound allows in-plane distortion up to the tolerance where the
+//     surface is flat, so a leaf much narrower than that could be triangulated into a
+//     triangle facing backwards over its neighbours. A mesh triangle whose normal points
+//     against S_u x S_v at its parameter centroid has its leaf split in two (across its longer
+//     side in space, keeping its bound, which bounds the halves too) and the leaves are
+//     triangulated again, up to 8 rounds (and not below max_depth).
 // Deterministic: the same input gives bitwise the same mesh for any thread count.
 #pragma once
 
