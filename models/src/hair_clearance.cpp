@@ -84,7 +84,7 @@ std::optional<HairOverlap> tapered_overlap(const HairCapsule& p, const HairCapsu
   auto radii = [&](double s, double t) { return (1.0 - s * s) * p.radius + (1.0 - t * t) * q.radius; };
   // The inner minimum over t of a jointly convex function is convex in s.
   auto inner = [&](double s) { return minimize_convex([&](double t) { return gap(s, t) - radii(s, t); }); };
-  const auto [s, clearance] = minimize_convex([&](double s) { return inner(s).second; });
+  const auto [s, clearance] = minimize_convex([&](double u) { return inner(u).second; });
   if (clearance > 0.0) return std::nullopt;
   const double t = inner(s).first;
   return HairOverlap{i, j, gap(s, t), radii(s, t)};

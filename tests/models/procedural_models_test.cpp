@@ -174,7 +174,9 @@ TEST(ProceduralModels, ChairOnADiscBase) {
       const Vec3 p = disc.point(v);
       largest = std::max(largest, std::hypot((p[0] - cx) / cx, (p[2] - cz) / cz));
     }
-    if (!feet) EXPECT_NEAR(largest, 1.0, 1e-12);  // on the ellipse, never beyond it
+    if (!feet) {
+      EXPECT_NEAR(largest, 1.0, 1e-12);  // on the ellipse, never beyond it
+    }
   }
   // The listing's default, cubic = true, is the square chair.
   EXPECT_EQ(mesh_difference(build("chair", {{"cubic", true}}), build("chair")), "");
