@@ -2,6 +2,7 @@
 
 #include "genmod/kernel/point_evaluator.hpp"
 #include "genmod/operators/integrate.hpp"
+#include "genmod/operators/periodic.hpp"
 #include "genmod/solvers/inverse_operator.hpp"
 #include "genmod/solvers/minimize_operator.hpp"
 
@@ -56,16 +57,6 @@ Fn match_polar_angle(const Fn& c1, const Fn& c2, int parm) {
 
 namespace {
 
-// c(s) for s in [-1, 2] of a closed curve c on [0, 1]: c(s + 1) below 0, c(s - 1) above 1. The
-// arguments are clamped into [0, 1] so that no branch can fail (an interval evaluation
-// straddling 0 or 1 takes the hull of both branches: points near c(0) = c(1)).
-Fn wrapped(const Fn& c, int parm, const Fn& s) {
-  auto clamped = [](const Fn& t) { return min(max(t, Fn(0.0)), Fn(1.0)); };
-  const Fn below = compose(c, parm, clamped(s + 1.0)), inside = compose(c, parm, clamped(s));
-  const Fn above = compose(c, parm, clamped(s - 1.0));
-  return select(s < 0.0, below, select(s > 1.0, above, inside));
-}
-
 // The squared distance between inner at the search coordinate and outer (a smooth objective
 // with the distance's minimizers).
 Fn squared_distance(const Fn& candidate, const Fn& outer) {
@@ -106,13 +97,15 @@ Fn reparameterize_to_closest(const Fn& inner, const Fn& outer, int parm, double 
   // from 1 to 0 somewhere, and there the closest points near s = 0 and near s = 1 tie. The search
   // follows u instead: s = u + c + t with t in [-1/2, 1/2] and c = s*(0), inner wrapped around
   // its seam, so t*(u) stays inside its range and is continuous while the closest point stays
-  // within half a turn of u + c (the minimize operator then certifies it unique).
+  // within half a turn of u + c (the minimize operator then certifies it unique). inner is
+  // continued periodically (periodic.hpp) so that the derivative enclosures the certificate
+  // needs stay tight where the closest point crosses inner's seam.
   const double c = evaluate(compose(closest, parm, Fn(0.0)), std::vector<double>{})[0];
   if (!std::isfinite(c)) return compose(inner, parm, closest);
   const Fn along = x(parm) + c + x(s);
-  const Fn offset = minimize_operator(squared_distance(wrapped(inner, parm, along), outer), Fn(1.0), unknowns,
+  const Fn offset = minimize_operator(squared_distance(periodic(inner, parm, along), outer), Fn(1.0), unknowns,
                                       Box{Interval(-0.5, 0.5)}, epsilon);
-  return wrapped(inner, parm, x(parm) + c + offset);
+  return periodic(inner, parm, x(parm) + c + offset);
 }
 
 }  // namespace genmod

@@ -12,16 +12,10 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <set>
 #include <string>
 
 namespace genmod::models {
 namespace {
-
-// Models whose adaptive mesh is not yet what it must be (each named in the note): a
-// matching whose closest point is not provably unique in places, so that its enclosures stay
-// too loose for refinement in a test's time (cross_section_matching).
-const std::set<std::string> kKnownDefects{"cross_section_matching"};
 
 class AdaptiveGallery : public ::testing::TestWithParam<std::string> {};
 
@@ -133,14 +127,13 @@ TEST(FurryBearMesh, CoarseTolerancesGiveNoFolds) {
   }
 }
 
-std::vector<std::string> checked_models() {
+std::vector<std::string> all_models() {
   std::vector<std::string> names;
-  for (const Model& m : gallery())
-    if (!kKnownDefects.count(m.name)) names.push_back(m.name);
+  for (const Model& m : gallery()) names.push_back(m.name);
   return names;
 }
 
-INSTANTIATE_TEST_SUITE_P(Gallery, AdaptiveGallery, ::testing::ValuesIn(checked_models()),
+INSTANTIATE_TEST_SUITE_P(Gallery, AdaptiveGallery, ::testing::ValuesIn(all_models()),
                          [](const auto& test) { return test.param; });
 
 }  // namespace

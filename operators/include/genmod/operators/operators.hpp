@@ -12,6 +12,7 @@
 #include "genmod/operators/matrix.hpp"
 #include "genmod/operators/offset.hpp"
 #include "genmod/operators/path.hpp"
+#include "genmod/operators/periodic.hpp"
 #include "genmod/operators/polygon_convolution.hpp"
 #include "genmod/operators/shapes.hpp"
 #include "genmod/operators/skeletal.hpp"

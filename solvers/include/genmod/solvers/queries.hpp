@@ -96,7 +96,7 @@ struct SurfaceIntersectionOptions {
   bool periodic_u = false, periodic_v = false, periodic_s = false, periodic_t = false;
   // The curve search in (u, v, s, t); its `periodic` list must stay empty (the flags above set
   // it).
-  ImplicitCurveOptions curve;
+  ImplicitCurveOptions curve{};
 };
 
 // Intersection curves of the parametric surfaces a(u, v) and b(s, t) (dimension 3) over
