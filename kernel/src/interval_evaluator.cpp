@@ -140,6 +140,66 @@ inline Interval rounded_floor_like(const Interval& x, bool is_floor, bool& jump)
   return r;
 }
 
+// The common case without error bits: a plain tape (plain_op()) over a bounded box, where an
+// error can only come from a non-finite bound (an overflow) or a square root of an interval
+// reaching below 0. Computes the same intervals and choices as the full loop below does when
+// no error bit is set anywhere, and returns false (the caller runs the full loop) where one
+// may be: some bound is not finite (their sum is not; an empty interval's NaN bounds too), or
+// a root's operand reaches below 0. Saves the error bytes' loads and stores of every clause.
+bool run_plain(std::span<const Clause> clauses, std::span<const double> k, std::span<const Interval> box, Interval* r,
+               std::uint8_t* choice) {
+  double sum = 0.0;  // of every result's bounds: finite iff all are (or a false alarm on overflow)
+  bool negative_root = false;
+  for (std::size_t i = 0; i < clauses.size(); ++i) {
+    const Clause& c = clauses[i];
+    const auto A = [&]() -> const Interval& { return r[c.a]; };
+    const auto B = [&]() -> const Interval& { return r[c.b]; };
+    Interval v;
+    switch (c.op) {
+      case Op::Max:
+        choice[i] = max_choice(A(), B(), kNoError, kNoError);
+        v = max_of(A(), B());
+        break;
+      case Op::Min:
+        choice[i] = min_choice(A(), B(), kNoError, kNoError);
+        v = min_of(A(), B());
+        break;
+      case Op::Add: v = add_up(A().lo(), A().hi(), B().lo(), B().hi()); break;
+      case Op::Sub: v = add_up(A().lo(), A().hi(), -B().hi(), -B().lo()); break;
+      case Op::AddImm: v = add_up(A().lo(), A().hi(), k[c.b], k[c.b]); break;
+      case Op::SubImm: v = add_up(k[c.b], k[c.b], -A().hi(), -A().lo()); break;
+      case Op::Neg: v = -A(); break;
+      case Op::MaxImm: {
+        const Interval kb(k[c.b]);
+        choice[i] = max_choice(A(), kb, kNoError, kNoError);
+        v = max_of(A(), kb);
+        break;
+      }
+      case Op::MinImm: {
+        const Interval kb(k[c.b]);
+        choice[i] = min_choice(A(), kb, kNoError, kNoError);
+        v = min_of(A(), kb);
+        break;
+      }
+      case Op::Square: v = cook(boost::numeric::square(raw(A()))); break;
+      case Op::Sqrt: {
+        negative_root = negative_root || A().lo() < 0.0;
+        std::uint8_t err = kNoError;
+        v = fast_sqrt(A(), err);
+        break;
+      }
+      case Op::Mul: v = cook(raw(A()) * raw(B())); break;
+      case Op::MulImm: v = cook(raw(A()) * k[c.b]); break;
+      case Op::Const: v = Interval::unchecked(k[c.a], k[c.a]); break;
+      case Op::Load: v = box[c.a]; break;
+      default: return false;  // not a plain tape
+    }
+    sum += v.lo() + v.hi();
+    r[c.out] = v;
+  }
+  return std::isfinite(sum) && !negative_root;
+}
+
 }  // namespace
 
 void IntervalEvaluator::run(const Tape& tape, std::span<const Interval> box, std::span<const Clause> clauses,
@@ -165,6 +225,11 @@ void IntervalEvaluator::run(const Tape& tape, std::span<const Interval> box, std
   std::uint8_t* choice = choices_.data();
   {
     RoundingScope up;
+    if (detail::tape_data(tape).plain && run_plain(clauses, k, box, r, choice)) {
+      jump_ = false;
+      return;
+    }
+    std::fill(choices_.begin(), choices_.end(), kChoiceBoth);  // the plain loop may have set some
     for (std::size_t i = 0; i < clauses.size(); ++i) {
       const Clause& c = clauses[i];
       // Operands are looked up only by the cases that have them: leaves and calls use `a` as

@@ -61,6 +61,13 @@ std::uint32_t field(const Clause& c, unsigned k) noexcept {
   return v;
 }
 
+// plain_op() as a table.
+constexpr auto kPlain = [] {
+  std::array<bool, 256> t{};
+  for (int op = 0; op < kNumOps; ++op) t[static_cast<std::size_t>(op)] = plain_op(static_cast<Op>(op));
+  return t;
+}();
+
 // Register operands by opcode (arity() as a table).
 constexpr auto kArity = [] {
   std::array<std::uint8_t, 256> t{};
@@ -210,7 +217,7 @@ std::shared_ptr<TapeData> TapeSimplifier::Impl::rebuild(const Source& src, std::
   Clause* const reg_out = reg_out_.data();
   Clause* const ssa_out = ssa_out_.data();
   std::size_t w = n;  // reg_out[w, n) and ssa_out[w, n) are the kept clauses
-  bool has_choices = false;
+  bool has_choices = false, plain = true;
   for (std::size_t i = n; i-- > 0;) {
     const std::uint32_t id = src.ssa[i].out;
     alias[id] = id;                 // all its uses are behind us
@@ -231,6 +238,7 @@ std::shared_ptr<TapeData> TapeSimplifier::Impl::rebuild(const Source& src, std::
       if (ar >= 3) reg.c = regs.use(ssa.c = alias[ssa.c]);
     }
     has_choices = has_choices || has_choice(ssa.op);
+    plain = plain && kPlain[static_cast<std::size_t>(ssa.op)];
   }
 
   out->clauses.reserve(2 * (n - w));
@@ -239,6 +247,7 @@ std::shared_ptr<TapeData> TapeSimplifier::Impl::rebuild(const Source& src, std::
   if (!calls_.empty()) finish_calls(src, w, *out);
   out->num_registers = std::max<std::uint32_t>(regs.count(), 1);
   out->has_choices = has_choices;
+  out->plain = plain;
   clean_ = true;
   return out;
 }

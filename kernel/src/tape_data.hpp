@@ -23,6 +23,19 @@ struct Clause {
 static_assert(sizeof(Clause) == 20);
 
 
+// The opcodes of the interval evaluator's error-free loop (interval_evaluator.cpp): arithmetic,
+// min / max and square root, whose only errors come from non-finite bounds or a negative root.
+constexpr bool plain_op(Op op) noexcept {
+  switch (op) {
+    case Op::Const: case Op::Load: case Op::Add: case Op::Sub: case Op::Mul: case Op::Neg: case Op::Square:
+    case Op::Sqrt: case Op::Min: case Op::Max: case Op::AddImm: case Op::SubImm: case Op::MulImm:
+    case Op::MinImm: case Op::MaxImm:
+      return true;
+    default:
+      return false;
+  }
+}
+
 // One application of a custom operator on the tape.
 struct CallSite {
   const CustomOp* op;         // kept alive by the tape: custom_ops()[op_index]
@@ -53,6 +66,7 @@ struct TapeData {
   std::vector<std::uint32_t> call_args;  // argument registers, then argument values
   std::uint32_t num_registers = 0;
   bool has_choices = false;
+  bool plain = false;  // every clause is a plain_op(): the interval evaluator's error-free loop applies
 
   std::size_t size() const noexcept { return clauses.size() / 2; }
   std::span<const Clause> reg() const noexcept { return std::span(clauses).first(size()); }
