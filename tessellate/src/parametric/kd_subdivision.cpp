@@ -41,8 +41,42 @@ double magnitude(const Interval& x) { return std::max(std::abs(x.lo()), std::abs
 // Relative slack for the round-to-nearest arithmetic of the bound formulas (a few ulps).
 constexpr double kSlack = 1.0 + 1e-12;
 
+// The second-order bound of a leaf X = [u0, u0 + a] x [v0, v0 + b], from the interval
+// second derivatives over X. Proof: let a triangle have vertices p_i in X and p = sum l_i p_i
+// (l_i >= 0, sum l_i = 1) a point of it, d_i = p_i - p = (du_i, dv_i). X is convex, so each
+// segment p -> p_i lies in X, and where S is C^2 on X Taylor's theorem with the Lagrange
+// remainder gives, per component j, S_j(p_i) = S_j(p) + grad S_j(p) d_i + 1/2 q_ij, with
+//   q_ij = S_uu du_i^2 + (S_uv + S_vu) du_i dv_i + S_vv dv_i^2 at a point xi_ij of the segment.
+// As sum l_i d_i = 0 the gradient terms cancel: S_j(p) - sum l_i S_j(p_i) = -1/2 sum l_i q_ij.
+// sum l_i du_i^2 is the variance of a distribution on an interval of width a, so it lies in
+// [0, a^2/4]; likewise sum l_i dv_i^2 in [0, b^2/4], and sum l_i |du_i dv_i| <= ab/4 by
+// Cauchy-Schwarz. Each second derivative at xi_ij lies in its enclosure over X, so
+//   sum l_i q_ij in [0, a^2/4] S_uu(X) + [-ab/4, ab/4] (S_uv(X) + S_vu(X)) + [0, b^2/4] S_vv(X),
+// and the distance from the triangle's point to S(p) is at most the norm over j of half the
+// magnitudes of these intervals. For a quadratic part of the same size this is half the
+// linear bound (whose Jacobian widths are about |S_uu| a + |S_uv| b), and where S_uu and S_vv
+// have opposite signs (a saddle) their terms partly cancel.
+struct SecondOrder {
+  std::array<Interval, 3> uu, cross, vv;  // per component: S_uu, S_uv + S_vu, S_vv over the leaf
+
+  // The bound for a piece of widths a x b of the leaf (any sub-box: its enclosures lie within
+  // these); rounded to nearest, covered by kSlack.
+  double bound(double a, double b) const {
+    const double a2 = 0.25 * a * a, ab = 0.25 * a * b, b2 = 0.25 * b * b;
+    double sum2 = 0.0;
+    for (std::size_t j = 0; j < 3; ++j) {
+      const double c = ab * std::max(std::abs(cross[j].lo()), std::abs(cross[j].hi()));
+      const double hi = a2 * std::max(uu[j].hi(), 0.0) + c + b2 * std::max(vv[j].hi(), 0.0);
+      const double lo = a2 * std::min(uu[j].lo(), 0.0) - c + b2 * std::min(vv[j].lo(), 0.0);
+      const double e = 0.5 * std::max(hi, -lo);
+      sum2 += e * e;
+    }
+    return std::sqrt(sum2);
+  }
+};
+
 struct NodeBounder {
-  IntervalEvaluator value_ev, jacobian_ev;
+  IntervalEvaluator value_ev, jacobian_ev, hessian_ev;
 
   Bounded bound(const CompiledPatch& p, const Node& n, const AdaptiveMeshOptions& o) {
     const Interval u(grid_value(p.u, n.rect.u0), grid_value(p.u, n.rect.u1));
@@ -75,8 +109,23 @@ struct NodeBounder {
       const double e = 0.5 * (half_width(su) * a + half_width(sv) * b);
       linear2 += e * e;
     }
-    if (o.bound == LeafBound::Best && jacobian_ok && finite && !error && value_ev.continuous())
-      r.bound = std::min(r.bound, std::sqrt(linear2) * kSlack);
+    const bool smooth = o.bound == LeafBound::Best && jacobian_ok && finite && !error && value_ev.continuous();
+    if (smooth) r.bound = std::min(r.bound, std::sqrt(linear2) * kSlack);
+    // Second derivatives: the second-order bound (above), where S is C^2 on the leaf (the
+    // Jacobian continuous too, the second derivatives bounded and continuous). Skipped for a
+    // leaf the cheaper bounds accept already, unless a refine criterion decides the splits
+    // (then the tolerance does not, and the leaf's reported bound should be the tightest).
+    if (smooth && jacobian_ev.continuous() && (r.bound > o.tolerance || o.refine)) {
+      const auto h = hessian_ev.eval(p.hessian, box);
+      bool hessian_ok = hessian_ev.continuous();
+      for (std::size_t k = 0; k < 12; ++k)
+        hessian_ok = hessian_ok && h[k].is_bounded() && !h[k].is_empty() && hessian_ev.errors()[k] == 0;
+      if (hessian_ok) {
+        SecondOrder q;
+        for (std::size_t j = 0; j < 3; ++j) q.uu[j] = h[j], q.cross[j] = h[3 + j] + h[6 + j], q.vv[j] = h[9 + j];
+        r.bound = std::min(r.bound, q.bound(a, b) * kSlack);
+      }
+    }
     const bool refine = o.refine && o.refine(n.patch, u, v);
     // A periodic axis closes into a loop, which needs at least three vertices to be a
     // surface: a thin tube (a hair) within the tolerance with one or two leaves around would
@@ -105,8 +154,14 @@ struct NodeBounder {
 
 CompiledPatch compile_patch(const SurfacePatch& patch) {
   const Fn& s = patch.surface;
-  return CompiledPatch{Tape(s, kUv), Tape(cat({derivative(s, 0), derivative(s, 1)}), kUv), patch.u, patch.v,
-                       patch.periodic_u, patch.periodic_v};
+  const Fn su = derivative(s, 0), sv = derivative(s, 1);
+  return CompiledPatch{Tape(s, kUv),
+                       Tape(cat({su, sv}), kUv),
+                       Tape(cat({derivative(su, 0), derivative(su, 1), derivative(sv, 0), derivative(sv, 1)}), kUv),
+                       patch.u,
+                       patch.v,
+                       patch.periodic_u,
+                       patch.periodic_v};
 }
 
 Subdivision subdivide(const std::vector<CompiledPatch>& patches, const AdaptiveMeshOptions& options) {
