@@ -94,6 +94,7 @@ struct Measured {
   double bound = kInfinity;
   std::optional<SecondOrder> second_order;
   bool jacobian_ok = false;
+  bool smooth = false;  // the linear bound applies (S continuous, Jacobian bounded)
   double len_u = 0.0, len_v = 0.0;
 };
 
@@ -133,6 +134,7 @@ struct NodeBounder {
     }
     r.jacobian_ok = jacobian_ok;
     const bool smooth = o.bound == LeafBound::Best && jacobian_ok && finite && !error && value_ev.continuous();
+    r.smooth = smooth;
     if (smooth) r.bound = std::min(r.bound, std::sqrt(linear2) * kSlack);
     // Second derivatives: the second-order bound (above), where S is C^2 on the leaf (the
     // Jacobian continuous too, the second derivatives bounded and continuous). Skipped for a
@@ -182,13 +184,15 @@ struct NodeBounder {
     // Halve the direction along which the piece is longer (the parameter extent when the
     // Jacobian has no finite bound), unless the halves' own bounds say otherwise.
     bool split_u = m.jacobian_ok ? m.len_u >= m.len_v : width_u >= width_v;
-    if (over && std::isfinite(r.bound) && most_u >= 2 && most_v >= 2) {
+    if (over && m.smooth && most_u >= 2 && most_v >= 2) {
       // Without second derivatives to plan from, the split whose worse half has the smaller
       // bound. The longer side is the wrong guess where the bound is
       // held up by a jump of the Jacobian across the other axis (the gear's polyline
       // schedule: S_v jumps at its corners): halving the long side there leaves that jump
-      // in every half. Four more evaluations per split node; the chosen halves are
-      // evaluated again at the next level (cheaper than keeping them: most nodes split).
+      // in every half. Four more evaluations per split node (the chosen halves are
+      // evaluated again at the next level), so only where the linear bound applies: where
+      // only the box diameter does (S may jump: the spoon's pieces) the trial did not pay,
+      // spoon 87,119 -> 265,857 evaluations, 9.0 -> 21 s CPU, for 3% fewer leaves.
       GridRect lo = n.rect, hi = n.rect;
       lo.u1 = hi.u0 = n.rect.u0 + width_u / 2;
       const double by_u = std::max(measure(p, lo, o).bound, measure(p, hi, o).bound);
