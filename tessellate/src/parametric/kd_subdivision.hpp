@@ -13,9 +13,11 @@
 
 namespace genmod::parametric {
 
-// A patch compiled for meshing: S and its Jacobian columns (S_u, S_v), inputs (x(0), x(1)).
+// A patch compiled for meshing: S, its Jacobian columns (S_u, S_v) and its second derivatives
+// (S_uu, S_uv, S_vu, S_vv: S_uv = d/dv S_u and S_vu = d/du S_v, both kept so that the
+// second-order bound needs no symmetry argument), inputs (x(0), x(1)).
 struct CompiledPatch {
-  Tape value, jacobian;
+  Tape value, jacobian, hessian;
   Interval u, v;
   bool periodic_u = false, periodic_v = false;
 };

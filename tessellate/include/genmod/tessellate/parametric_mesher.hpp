@@ -23,6 +23,11 @@
 //         S(p) - sum_i l_i S(p_i) = sum_i l_i (J_i - J_mid)(p - p_i) by the mean value theorem
 //         (valid where S is continuous on X with a bounded Jacobian; the interval evaluator
 //         says when). It shrinks with the square of the leaf size.
+//       - where S is C^2 on X (second derivatives bounded and continuous), the second-order
+//         bound: half the norm over j of the magnitude of [0, a^2/4] S_uu,j(X) +
+//         [-ab/4, ab/4] (S_uv,j + S_vu,j)(X) + [0, b^2/4] S_vv,j(X), by Taylor's theorem along
+//         each segment from a triangle's point to its corners (the proof is at SecondOrder in
+//         kd_subdivision.cpp). About half the linear bound, and tight for a quadratic.
 //     A leaf is accepted when its bound is at most `tolerance`. Vertices merged across a seam
 //     or a pole use one sample for several parameter points; the largest such deviation is
 //     measured and added.
@@ -67,7 +72,7 @@ struct SurfacePatch {
 };
 
 enum class LeafBound {
-  Best,      // the smaller of the box diameter and the linear interpolation bound (above)
+  Best,      // the smallest of the box diameter, the linear and the second-order bounds (above)
   BoxWidth,  // Snyder's criterion w(S(X)) <= tolerance alone (claim 37)
 };
 
