@@ -115,7 +115,8 @@ BSplineOp::BSplineOp(int dim, int degree, std::vector<double> knots, std::vector
 bool BSplineOp::inclusion_continuous(std::span<const Interval> args, std::span<Interval> out,
                                      std::span<std::uint8_t> err) const {
   inclusion(args, out, err);
-  if (degree_ == 0) return false;
+  // Degree 0 too: every interior knot is listed as a jump, and a piece is constant on a box
+  // that holds none but at its start (a value at a knot comes from the span starting there).
   return args[0].is_empty() || jump_free(jumps_, args[0].lo(), args[0].hi());
 }
 

@@ -196,6 +196,24 @@ TEST(Curve, RationalDerivativesAreEnclosedSpanBySpan) {
   EXPECT_TRUE(iv.continuous());
 }
 
+// A polyline's derivative is a degree-0 B-spline: constant on each span, so continuous on a box
+// that holds no knot but at its start, and a jump across one. (It used to report no box
+// continuous, so the meshers' second-order bound never applied to a polyline schedule.)
+TEST(Curve, DegreeZeroPiecesAreContinuousInsideASpan) {
+  const Curve polyline = Curve::bspline({{0.0}, {1.0}, {5.0}}, 1, {0, 0, 0.5, 1, 1});
+  const Tape slope(derivative(polyline(x(0)), 0));
+  IntervalEvaluator ev;
+  EXPECT_NEAR(ev.eval(slope, {Interval(0.1, 0.4)})[0].hi(), 2.0, 1e-12);
+  EXPECT_TRUE(ev.continuous());
+  ev.eval(slope, {Interval(0.5, 0.7)});  // starts at the knot: the span starting there
+  EXPECT_TRUE(ev.continuous());
+  const Interval both = ev.eval(slope, {Interval(0.4, 0.6)})[0];
+  EXPECT_TRUE(both.contains(Interval(2.0, 8.0)) && both.width() < 6.0 + 1e-12);
+  EXPECT_FALSE(ev.continuous());
+  ev.eval(slope, {Interval(0.3, 0.5)});  // ends at the knot, where the slope is already 8
+  EXPECT_FALSE(ev.continuous());
+}
+
 // The unit tangent is enclosed span by span too: at a knot where only the speed jumps its
 // enclosure shrinks with the box, where normalize(c') stays wide (the hull of two speeds
 // divided by itself). Polynomial curves (a Catmull-Rom spline, triple knots) as well.
