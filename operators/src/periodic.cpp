@@ -140,7 +140,20 @@ class PeriodicOp final : public CustomOp, public std::enable_shared_from_this<Pe
   mutable std::shared_ptr<const PeriodicOp> derivative_op_;
 };
 
-bool closed(const Fn& c, int parm) {
+}  // namespace
+
+Fn periodic(const Fn& c, int parm, const Fn& s) {
+  if (parm < 0 || parm >= kMaxInputs)
+    fail("parameter " + std::to_string(parm) + " is outside [0, " + std::to_string(kMaxInputs) + ")");
+  if (s.dim() != 1) fail("the argument s must be scalar, got dimension " + std::to_string(s.dim()));
+  if (c.input_mask() != (std::uint64_t{1} << parm))
+    fail("the curve must depend on x(" + std::to_string(parm) + ") and on no other coordinate");
+  if (!is_closed_curve(c, parm)) fail("the curve is not closed: c(0) and c(1) differ (or are not finite)");
+  return apply_custom(std::make_shared<const PeriodicOp>(c, parm), {s});
+}
+
+bool is_closed_curve(const Fn& c, int parm) {
+  if (parm < 0 || parm >= kMaxInputs || c.input_mask() != (std::uint64_t{1} << parm)) return false;
   const Tape tape(c, std::vector<int>{parm});
   PointEvaluator ev;
   const std::span<const double> at0 = ev.eval(tape, {0.0});
@@ -153,18 +166,6 @@ bool closed(const Fn& c, int parm) {
     gap = std::max(gap, std::abs(a[j] - b[j]));
   }
   return gap <= 1e-12 * size;
-}
-
-}  // namespace
-
-Fn periodic(const Fn& c, int parm, const Fn& s) {
-  if (parm < 0 || parm >= kMaxInputs)
-    fail("parameter " + std::to_string(parm) + " is outside [0, " + std::to_string(kMaxInputs) + ")");
-  if (s.dim() != 1) fail("the argument s must be scalar, got dimension " + std::to_string(s.dim()));
-  if (c.input_mask() != (std::uint64_t{1} << parm))
-    fail("the curve must depend on x(" + std::to_string(parm) + ") and on no other coordinate");
-  if (!closed(c, parm)) fail("the curve is not closed: c(0) and c(1) differ (or are not finite)");
-  return apply_custom(std::make_shared<const PeriodicOp>(c, parm), {s});
 }
 
 }  // namespace genmod

@@ -65,17 +65,6 @@ Fn squared_distance(const Fn& candidate, const Fn& outer) {
   return squared;
 }
 
-bool closed(const Fn& c, int parm) {
-  const std::vector<double> a = evaluate(compose(c, parm, Fn(0.0)), std::vector<double>{}),
-                            b = evaluate(compose(c, parm, Fn(1.0)), std::vector<double>{});
-  double size = 0.0, gap = 0.0;
-  for (std::size_t j = 0; j < a.size(); ++j) {
-    size = std::max({size, std::abs(a[j]), std::abs(b[j])});
-    gap = std::max(gap, std::abs(a[j] - b[j]));
-  }
-  return gap <= 1e-12 * std::max(size, 1.0);
-}
-
 }  // namespace
 
 Fn reparameterize_to_closest(const Fn& inner, const Fn& outer, int parm, double epsilon) {
@@ -90,8 +79,7 @@ Fn reparameterize_to_closest(const Fn& inner, const Fn& outer, int parm, double 
   const int unknowns[] = {s};
   const Fn closest = minimize_operator(squared_distance(compose(inner, parm, x(s)), outer), Fn(1.0), unknowns,
                                        Box{Interval(0.0, 1.0)}, epsilon);
-  if (!(inner.inputs() == std::vector<int>{parm} && outer.inputs() == std::vector<int>{parm} && closed(inner, parm) &&
-        closed(outer, parm)))
+  if (!(is_closed_curve(inner, parm) && is_closed_curve(outer, parm)))
     return compose(inner, parm, closest);
   // Closed curves: s*(u) goes once around inner as u goes around outer, so on [0, 1] it jumps
   // from 1 to 0 somewhere, and there the closest points near s = 0 and near s = 1 tie. The search

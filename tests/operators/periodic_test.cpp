@@ -85,9 +85,22 @@ TEST(Periodic, EnclosuresShrinkAcrossTheSeam) {
   const Tape value(by_periodic, std::vector<int>{1});
   const Interval v = ev.eval(value, {Interval(1.0 - 1e-6, 1.0 + 1e-6)})[0];
   EXPECT_LT(v.width(), 1e-5);
+  // The B-spline's ends evaluate to the same doubles: continuous across the seam. A circle
+  // with 2 pi rounded ends 2.4e-16 from its start: a jump there, continuous inside a period.
+  EXPECT_TRUE(ev.continuous());
+  const Fn circle = cat({cos(kTurn * x(0)), sin(kTurn * x(0))});
+  const Tape around(periodic(circle, 0, x(1)), std::vector<int>{1});
+  ev.eval(around, {Interval(0.9, 1.1)});
+  EXPECT_FALSE(ev.continuous());
+  ev.eval(around, {Interval(1.1, 1.9)});
+  EXPECT_TRUE(ev.continuous());
 }
 
 TEST(Periodic, BadCurvesAreRefused) {
+  EXPECT_TRUE(is_closed_curve(oval(), 0));
+  EXPECT_FALSE(is_closed_curve(oval(), 1));                       // depends on x(0), not x(1)
+  EXPECT_FALSE(is_closed_curve(cat({x(0), x(0) * x(0)}), 0));    // open
+  EXPECT_FALSE(is_closed_curve(cat({x(0), x(1)}), 0));           // another coordinate
   testing::expect_throw_naming([] { periodic(cat({x(0), x(0) * x(0)}), 0, x(1)); }, "periodic");  // open
   testing::expect_throw_naming([] { periodic(cat({cos(kTurn * x(0)), x(2)}), 0, x(1)); }, "periodic");
   testing::expect_throw_naming([] { periodic(Fn(1.0), 0, x(1)); }, "periodic");

@@ -27,4 +27,8 @@ namespace genmod {
 
 Fn periodic(const Fn& c, int parm, const Fn& s);
 
+// Whether c is a closed curve periodic() accepts: it depends on x(parm) alone, and c(0), c(1)
+// are finite and agree to 1e-12 of their size (at least 1).
+bool is_closed_curve(const Fn& c, int parm);
+
 }  // namespace genmod
